@@ -1,0 +1,34 @@
+// strata: the command-line front end. Each subcommand lives in its own file; this one only parses
+// and turns every failure into one line on stderr and a non-zero exit.
+#include <cstdio>
+#include <CLI/App.hpp>
+#include <CLI/Config.hpp>
+#include <CLI/Formatter.hpp>
+
+#include "error.h"
+#include "render_command.h"
+#include "samples_command.h"
+
+int main(int argc, char** argv) {
+    CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
+    app.require_subcommand(1);
+    strata::addRenderCommand(app);
+    strata::addSamplesCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "strata: %s (see --help)\n", e.what());
+        return 2;
+    } catch (const strata::Error& e) {
+        std::fprintf(stderr, "strata: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "strata: unexpected failure: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,35 @@
+#pragma once
+// The options every rendering command shares (render, view, bench), registered on a CLI11
+// subcommand and checked in one place.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <CLI/App.hpp>
+
+#include "camera.h"
+#include "progressive_renderer.h"
+#include "scene_loader.h"
+
+namespace strata {
+
+struct RenderOptions {
+    std::string scene;
+    std::string cameraFile;
+    int width = 0;   // 0: from the camera file
+    int height = 0;
+    int depth = 5;
+    std::string sampler = "strata24";
+    uint64_t seed = 0;
+    int threads = 0;
+
+    // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
+    void addTo(CLI::App& command, bool sceneRequired);
+    // Validated settings for the renderer; throws strata::Error naming the bad option.
+    RenderSettings renderSettings() const;
+    // Loads the scene and camera; width/height options override the camera file.
+    LoadedScene loadScene() const;
+    Camera makeCamera(const LoadedScene& loaded) const;
+};
+
+}  // namespace strata

@@ -1,0 +1,7 @@
+#pragma once
+
+namespace strata {
+
+inline constexpr float kPi = 3.14159265358979323846f;
+
+}  // namespace strata

@@ -1,0 +1,25 @@
+#pragma once
+// Geometry and materials as plain data: what the OBJ loader produces and what tests build by hand.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+
+namespace strata {
+
+struct Material {
+    std::string name;
+    glm::vec3 diffuse{0.0f};   // Kd: Lambertian albedo
+    glm::vec3 emission{0.0f};  // Ke: radiance emitted on the counter-clockwise (front) side
+};
+
+struct MeshData {
+    std::vector<glm::vec3> positions;
+    // Vertex indices, counter-clockwise seen from the front.
+    std::vector<std::array<uint32_t, 3>> triangles;
+    std::vector<uint32_t> triangleMaterials;  // one index into `materials` per triangle
+    std::vector<Material> materials;
+};
+
+}  // namespace strata

@@ -1,0 +1,270 @@
+#include "obj_loader.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+#include <vector>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <tiny_obj_loader.h>
+
+#include "error.h"
+
+namespace strata {
+namespace {
+
+std::string readText(const std::filesystem::path& path, const char* what) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path.string() + ": cannot open " + what);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string_view> splitWords(std::string_view line) {
+    std::vector<std::string_view> words;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        size_t j = i;
+        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
+        if (j > i) words.push_back(line.substr(i, j - i));
+        i = j;
+    }
+    return words;
+}
+
+bool isNumber(std::string_view word) {
+    double value;
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+    return result.ec == std::errc() && result.ptr == word.data() + word.size();
+}
+
+bool isInteger(std::string_view word) {
+    long value;
+    const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+    return result.ec == std::errc() && result.ptr == word.data() + word.size() && value != 0;
+}
+
+// A face corner: v, v/vt, v//vn or v/vt/vn, with non-zero (possibly negative) integers.
+bool isFaceCorner(std::string_view word) {
+    std::vector<std::string_view> parts;
+    size_t start = 0;
+    for (size_t i = 0; i <= word.size(); ++i) {
+        if (i == word.size() || word[i] == '/') {
+            parts.push_back(word.substr(start, i - start));
+            start = i + 1;
+        }
+    }
+    if (parts.size() > 3 || !isInteger(parts[0])) return false;
+    for (size_t i = 1; i < parts.size(); ++i) {
+        if (!parts[i].empty() && !isInteger(parts[i])) return false;
+    }
+    return true;
+}
+
+[[noreturn]] void failAt(const std::string& name, size_t line, const std::string& message) {
+    throw Error(name + ":" + std::to_string(line) + ": " + message);
+}
+
+template <typename Visit>
+void forEachLine(const std::string& text, Visit visit) {
+    size_t lineNumber = 0;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        ++lineNumber;
+        std::string_view line(text.data() + start, end - start);
+        if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        const auto words = splitWords(line);
+        if (!words.empty()) visit(lineNumber, words);
+        start = end + 1;
+    }
+}
+
+void checkNumbers(const std::string& name, size_t line, const std::vector<std::string_view>& words,
+                  size_t minCount, size_t maxCount) {
+    const size_t count = words.size() - 1;
+    if (count < minCount || count > maxCount) {
+        failAt(name, line, "'" + std::string(words[0]) + "' takes " + std::to_string(minCount) +
+                               (maxCount > minCount ? " to " + std::to_string(maxCount) : "") +
+                               " numbers, got " + std::to_string(count));
+    }
+    for (size_t i = 1; i < words.size(); ++i) {
+        if (!isNumber(words[i])) {
+            failAt(name, line, "'" + std::string(words[i]) + "' is not a number");
+        }
+    }
+}
+
+// Returns the mtllib file names.
+std::vector<std::string> validateObj(const std::string& text, const std::string& name) {
+    std::vector<std::string> libraries;
+    size_t vertices = 0;
+    forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
+        const std::string_view key = words[0];
+        if (key == "v") {
+            checkNumbers(name, line, words, 3, 7);  // x y z [w] or x y z r g b
+            ++vertices;
+        } else if (key == "vn") {
+            checkNumbers(name, line, words, 3, 3);
+        } else if (key == "vt") {
+            checkNumbers(name, line, words, 1, 3);
+        } else if (key == "f") {
+            if (words.size() < 4) failAt(name, line, "a face needs at least 3 vertices");
+            for (size_t i = 1; i < words.size(); ++i) {
+                if (!isFaceCorner(words[i])) {
+                    failAt(name, line, "'" + std::string(words[i]) + "' is not a face vertex");
+                }
+                long index = 0;
+                std::from_chars(words[i].data(), words[i].data() + words[i].size(), index);
+                const long resolved = index > 0 ? index : static_cast<long>(vertices) + 1 + index;
+                if (resolved < 1 || resolved > static_cast<long>(vertices)) {
+                    failAt(name, line, "vertex index " + std::to_string(index) +
+                                           " is out of range (" + std::to_string(vertices) +
+                                           " vertices so far)");
+                }
+            }
+        } else if (key == "mtllib") {
+            if (words.size() < 2) failAt(name, line, "mtllib needs a file name");
+            for (size_t i = 1; i < words.size(); ++i) libraries.emplace_back(words[i]);
+        } else if (key == "usemtl") {
+            if (words.size() != 2) failAt(name, line, "usemtl needs one material name");
+        }
+    });
+    return libraries;
+}
+
+void validateMtl(const std::string& text, const std::string& name) {
+    bool inMaterial = false;
+    forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
+        const std::string_view key = words[0];
+        if (key == "newmtl") {
+            if (words.size() != 2) failAt(name, line, "newmtl needs one material name");
+            inMaterial = true;
+            return;
+        }
+        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Ka" ||
+                            key == "Tf" || key == "Kt";
+        const bool scalar = key == "Ns" || key == "Ni" || key == "d" || key == "Tr" ||
+                            key == "Pr" || key == "Pm" || key == "illum";
+        if ((colour || scalar) && !inMaterial) {
+            failAt(name, line, "'" + std::string(key) + "' before any newmtl");
+        }
+        if (colour) checkNumbers(name, line, words, 1, 3);
+        if (scalar) checkNumbers(name, line, words, 1, 1);
+    });
+}
+
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Builds the mesh from text that validateObj and validateMtl have accepted.
+MeshData buildMesh(const std::string& objText, const std::string& objName,
+                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromString(objText, mtlText, config)) {
+        std::string error = reader.Error();
+        while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
+        throw Error(objName + ": " + (error.empty() ? "cannot parse" : error));
+    }
+    // tinyobjloader reports a usemtl of an undefined material only as a warning; it is an error
+    // here, since the faces would silently lose their material.
+    if (const auto& warning = reader.Warning(); warning.find("material [") != std::string::npos) {
+        const auto end = warning.find('\n');
+        throw Error(objName + ": " + warning.substr(0, end) + " in " + mtlName);
+    }
+
+    MeshData mesh;
+    const auto& attrib = reader.GetAttrib();
+    mesh.positions.reserve(attrib.vertices.size() / 3);
+    for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
+        mesh.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+    }
+    for (const auto& m : reader.GetMaterials()) {
+        Material material;
+        material.name = m.name;
+        material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+        material.emission = {m.emission[0], m.emission[1], m.emission[2]};
+        if (!isFinite(material.diffuse) || !isFinite(material.emission) ||
+            glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
+            glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f) {
+            throw Error(mtlName + ": material '" + m.name + "' has a negative or non-finite Kd or Ke");
+        }
+        if (glm::max(glm::max(material.diffuse.x, material.diffuse.y), material.diffuse.z) > 1.0f) {
+            throw Error(mtlName + ": material '" + m.name + "' has Kd above 1 (creates energy)");
+        }
+        mesh.materials.push_back(material);
+    }
+    // Faces without a material get a neutral grey; it is appended only when used.
+    const auto defaultMaterial = static_cast<uint32_t>(mesh.materials.size());
+    bool defaultUsed = false;
+
+    size_t dropped = 0;
+    for (const auto& shape : reader.GetShapes()) {
+        const auto& indices = shape.mesh.indices;
+        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+            const std::array<uint32_t, 3> tri{static_cast<uint32_t>(indices[3 * f].vertex_index),
+                                              static_cast<uint32_t>(indices[3 * f + 1].vertex_index),
+                                              static_cast<uint32_t>(indices[3 * f + 2].vertex_index)};
+            const glm::vec3& a = mesh.positions[tri[0]];
+            const glm::vec3& b = mesh.positions[tri[1]];
+            const glm::vec3& c = mesh.positions[tri[2]];
+            const glm::vec3 n = glm::cross(b - a, c - a);
+            if (!isFinite(a) || !isFinite(b) || !isFinite(c) || !isFinite(n) ||
+                !(glm::dot(n, n) > 0.0f)) {
+                ++dropped;
+                continue;
+            }
+            const int materialId = shape.mesh.material_ids[f];
+            uint32_t material = defaultMaterial;
+            if (materialId >= 0) {
+                material = static_cast<uint32_t>(materialId);
+            } else {
+                defaultUsed = true;
+            }
+            mesh.triangles.push_back(tri);
+            mesh.triangleMaterials.push_back(material);
+        }
+    }
+    if (defaultUsed) mesh.materials.push_back({"(default)", glm::vec3(0.5f), glm::vec3(0.0f)});
+    if (report) {
+        report->faces = mesh.triangles.size();
+        report->droppedTriangles = dropped;
+    }
+    return mesh;
+}
+
+}  // namespace
+
+MeshData parseObj(const std::string& objText, const std::string& objName,
+                  const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
+    validateObj(objText, objName);
+    validateMtl(mtlText, mtlName);
+    return buildMesh(objText, objName, mtlText, mtlName, report);
+}
+
+MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
+    const std::string objText = readText(path, "scene");
+    std::string mtlText;
+    std::string mtlNames;
+    for (const auto& library : validateObj(objText, path.string())) {
+        const auto mtlPath = path.parent_path() / library;
+        const std::string text = readText(mtlPath, "material library (named by mtllib)");
+        validateMtl(text, mtlPath.string());
+        mtlText += text + "\n";
+        mtlNames += (mtlNames.empty() ? "" : ",") + mtlPath.string();
+    }
+    return buildMesh(objText, path.string(), mtlText, mtlNames.empty() ? path.string() : mtlNames,
+                     report);
+}
+
+}  // namespace strata

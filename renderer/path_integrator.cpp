@@ -1,0 +1,40 @@
+#include "path_integrator.h"
+
+#include <glm/geometric.hpp>
+
+#include "constants.h"
+#include "frame.h"
+
+namespace strata {
+
+glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samples,
+                                   uint64_t& rays) const {
+    glm::vec3 radiance(0.0f);
+    glm::vec3 weight(1.0f);  // product of f_r cos / pdf along the path so far
+    Ray ray = cameraRay;
+    // A loop, not recursion: depth 10000 costs no stack.
+    for (int bounce = 0;; ++bounce) {
+        ++rays;
+        const auto hit = scene_.intersect(ray);
+        if (!hit) break;  // the path left the scene: nothing more arrives along it
+        const Material& material = scene_.material(hit->triangle);
+        const bool frontFacing = glm::dot(hit->normal, ray.direction) < 0.0f;
+        // Emission is one-sided: only the counter-clockwise (front) side emits.
+        if (frontFacing) radiance += weight * material.emission;
+        if (bounce == settings_.depth) break;
+
+        // Lambertian f_r = Kd / pi; a black surface ends the path (its weight is zero).
+        weight *= material.diffuse * (1.0f / kPi);
+        if (weight.x == 0.0f && weight.y == 0.0f && weight.z == 0.0f) break;
+        // Reflection is two-sided: the hemisphere is on the side the ray came from.
+        SurfaceHit surface = *hit;
+        if (!frontFacing) surface.normal = -surface.normal;
+        const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce);
+        weight *= sampled.cosOverPdf;
+        const glm::vec3 direction = Frame::fromNormal(surface.normal).toWorld(sampled.local);
+        ray = Ray{offsetRayOrigin(surface, direction), direction};
+    }
+    return radiance;
+}
+
+}  // namespace strata

@@ -1,0 +1,35 @@
+#pragma once
+// The random numbers of one path: step `step` (0..23) of pass `pass` at one pixel. Every value is
+// a hash of (seed, pixel, pass, step, bounce, dimension) (see random.h), which is what makes
+// renders bit-identical for any thread count.
+#include <cstdint>
+#include <glm/vec2.hpp>
+
+namespace strata {
+
+class PathSamples {
+public:
+    PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step);
+
+    // Sub-pixel position of the camera ray, uniform on [0,1)^2.
+    glm::vec2 pixelJitter() const;
+    // The point in [0,1)^2 that the direction sampler maps onto the hemisphere (or onto a stratum)
+    // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
+    glm::vec2 bouncePoint(int bounce) const;
+    // The stratum this path takes at `bounce` (stratum_schedule.h).
+    int stratum(int bounce) const;
+
+    uint64_t pixelKey() const { return pixelKey_; }
+    uint32_t pass() const { return pass_; }
+    int step() const { return step_; }
+
+private:
+    glm::vec2 point(uint64_t dimension) const;
+
+    uint64_t pixelKey_;
+    uint64_t pathKey_;
+    uint32_t pass_;
+    int step_;
+};
+
+}  // namespace strata

@@ -1,0 +1,79 @@
+#include "progressive_renderer.h"
+
+#include <string>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "error.h"
+
+namespace strata {
+namespace {
+constexpr int kTileSize = 16;
+constexpr int kMaxThreads = 1024;
+}  // namespace
+
+ProgressiveRenderer::ProgressiveRenderer(const Scene& scene, const Camera& camera,
+                                         const RenderSettings& settings)
+    : scene_(scene),
+      camera_(camera),
+      settings_(settings),
+      integrator_(scene, settings.integrator) {
+    if (settings.threads < 0 || settings.threads > kMaxThreads) {
+        throw Error("--threads must be in 1.." + std::to_string(kMaxThreads) + " (0: all cores)");
+    }
+    if (settings.integrator.depth < 0) throw Error("--depth must be at least 0");
+    arena_ = settings.threads > 0 ? std::make_unique<tbb::task_arena>(settings.threads)
+                                  : std::make_unique<tbb::task_arena>();
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() = default;
+
+int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency(); }
+
+void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass) {
+    render(buffer, pass, 0, kPathsPerPass);
+}
+
+void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step) {
+    render(buffer, pass, step, step + 1);
+}
+
+void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
+                                 int endStep) {
+    const int width = camera_.width();
+    const int height = camera_.height();
+    if (buffer.width() != width || buffer.height() != height) {
+        throw Error("accumulation buffer and camera differ in size");
+    }
+    arena_->execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(0, height, kTileSize, 0, width, kTileSize),
+            [&](const tbb::blocked_range2d<int>& tile) {
+                // Denormals are never needed for radiance; flushing them keeps every thread fast.
+                _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+                _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+                uint64_t rays = 0;
+                uint64_t paths = 0;
+                for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
+                    for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
+                        const size_t pixel = static_cast<size_t>(y) * width + x;
+                        for (int step = firstStep; step < endStep; ++step) {
+                            const PathSamples samples(settings_.seed, pixel, pass, step);
+                            const Ray ray = camera_.generateRay(x, y, samples.pixelJitter());
+                            buffer.addSample(pixel, integrator_.radiance(ray, samples, rays));
+                            ++paths;
+                        }
+                        if (endStep == kPathsPerPass) buffer.completePass(pixel);
+                    }
+                }
+                rays_.fetch_add(rays, std::memory_order_relaxed);
+                paths_.fetch_add(paths, std::memory_order_relaxed);
+            },
+            tbb::simple_partitioner());
+    });
+}
+
+}  // namespace strata

@@ -1,0 +1,60 @@
+#pragma once
+// Drives the path tracer over the image, a pass at a time, into an accumulation buffer.
+// A pass gives every pixel 24 paths (one per stratum under strata24). It can be delivered whole
+// (renderPass, the batch renderer) or in 24 steps of one path per pixel (renderStep, the viewer),
+// with the same samples either way. Work is split into tiles over a TBB arena of the requested
+// size; a pixel's samples depend only on (seed, pixel, pass, step, bounce), so the image is
+// bit-identical for any thread count.
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <tbb/task_arena.h>
+
+#include "accumulation_buffer.h"
+#include "camera.h"
+#include "path_integrator.h"
+#include "scene.h"
+
+
+namespace strata {
+
+inline constexpr int kPathsPerPass = 24;
+
+struct RenderSettings {
+    PathIntegratorSettings integrator;
+    uint64_t seed = 0;
+    int threads = 0;  // 0: all hardware threads
+};
+
+struct RenderCounters {
+    uint64_t paths = 0;
+    uint64_t rays = 0;
+};
+
+class ProgressiveRenderer {
+public:
+    ProgressiveRenderer(const Scene& scene, const Camera& camera, const RenderSettings& settings);
+    ~ProgressiveRenderer();
+
+    // All 24 paths of pass `pass` for every pixel; closes the pass in the buffer.
+    void renderPass(AccumulationBuffer& buffer, uint32_t pass);
+    // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass.
+    void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step);
+
+    RenderCounters counters() const { return {paths_.load(), rays_.load()}; }
+    const RenderSettings& settings() const { return settings_; }
+    int threadCount() const;
+
+private:
+    void render(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep);
+
+    const Scene& scene_;
+    const Camera& camera_;
+    RenderSettings settings_;
+    PathIntegrator integrator_;
+    std::unique_ptr<tbb::task_arena> arena_;
+    std::atomic<uint64_t> paths_{0};
+    std::atomic<uint64_t> rays_{0};
+};
+
+}  // namespace strata

@@ -1,0 +1,58 @@
+#include "scene_loader.h"
+
+#include <cstdio>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "error.h"
+
+namespace strata {
+namespace {
+
+// A view down -z onto the bounding box, far enough to see all of it.
+SceneSettings framingSettings(const Scene& scene) {
+    const glm::vec3 centre = 0.5f * (scene.boundsMin() + scene.boundsMax());
+    const float radius = 0.5f * glm::length(scene.boundsMax() - scene.boundsMin());
+    SceneSettings settings;
+    settings.pose.fovYDegrees = 40.0f;
+    settings.pose.lookAt = centre;
+    settings.pose.position = centre + glm::vec3(0.0f, 0.0f, 3.0f * glm::max(radius, 1e-3f));
+    return settings;
+}
+
+}  // namespace
+
+LoadedScene loadScene(const std::filesystem::path& objPath,
+                      const std::optional<std::filesystem::path>& cameraPath) {
+    if (!std::filesystem::is_regular_file(objPath)) {
+        throw Error(objPath.string() + ": no such scene file");
+    }
+    ObjLoadReport report;
+    MeshData mesh = loadObjFile(objPath, &report);
+    if (mesh.triangles.empty()) throw Error(objPath.string() + ": the scene has no usable triangles");
+    Scene scene(std::move(mesh));
+
+    std::filesystem::path usedCamera;
+    if (cameraPath) {
+        usedCamera = *cameraPath;
+    } else if (auto sidecar = std::filesystem::path(objPath).replace_extension(".json");
+               std::filesystem::is_regular_file(sidecar)) {
+        usedCamera = sidecar;
+    }
+    SceneSettings settings =
+        usedCamera.empty() ? framingSettings(scene) : loadSceneSettings(usedCamera);
+    return LoadedScene{std::move(scene), std::move(settings), report, objPath, usedCamera};
+}
+
+std::string describeScene(const LoadedScene& loaded) {
+    const SceneSummary& s = loaded.scene.summary();
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%s: %zu triangles (%zu degenerate dropped), %zu emitting (area %.4g), "
+                  "max albedo %.3g, %zu point lights",
+                  loaded.objPath.string().c_str(), s.triangles, loaded.report.droppedTriangles,
+                  s.emitters, s.emittingArea, s.maxAlbedo, loaded.settings.pointLights.size());
+    return line;
+}
+
+}  // namespace strata
