@@ -35,9 +35,10 @@ void RenderCommand::run() const {
     const LoadedScene loaded = render.loadScene();
     const Camera camera = render.makeCamera(loaded);
     std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
-    if (!loaded.settings.pointLights.empty()) {
-        std::fprintf(stderr, "note: point lights are ignored (they need next-event estimation)\n");
+    if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
+        std::fprintf(stderr, "note: the scene's point lights need --nee; without it they are dark\n");
     }
+    if (outputs.empty()) std::fprintf(stderr, "note: no --out given, no image will be written\n");
 
     AccumulationBuffer buffer(camera.width(), camera.height());
     ProgressiveRenderer renderer(loaded.scene, camera, settings);

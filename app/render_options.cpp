@@ -16,6 +16,7 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
         ->capture_default_str();
     command.add_option("--seed", seed, "Random seed")->capture_default_str();
     command.add_option("--threads", threads, "Render threads (0: all cores)")->capture_default_str();
+    command.add_flag("--nee", nee, "Next-event estimation (point lights are reached only this way)");
 }
 
 RenderSettings RenderOptions::renderSettings() const {
@@ -26,6 +27,7 @@ RenderSettings RenderOptions::renderSettings() const {
     if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     settings.integrator.sampler = *kind;
+    settings.integrator.nextEventEstimation = nee;
     settings.seed = seed;
     settings.threads = threads;
     return settings;

@@ -22,6 +22,7 @@ struct RenderOptions {
     std::string sampler = "strata24";
     uint64_t seed = 0;
     int threads = 0;
+    bool nee = false;
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);

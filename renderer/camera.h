@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "mesh.h"
 #include "ray.h"
 
 namespace strata {
@@ -17,11 +18,6 @@ struct CameraPose {
     glm::vec3 lookAt{0.0f, 0.0f, -1.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovYDegrees = 45.0f;
-};
-
-struct PointLight {
-    glm::vec3 position;
-    glm::vec3 intensity;  // W/sr
 };
 
 struct SceneSettings {

@@ -14,12 +14,18 @@ struct Material {
     glm::vec3 emission{0.0f};  // Ke: radiance emitted on the counter-clockwise (front) side
 };
 
+struct PointLight {
+    glm::vec3 position;
+    glm::vec3 intensity;  // W/sr; reached only by next-event estimation (a delta light)
+};
+
 struct MeshData {
     std::vector<glm::vec3> positions;
     // Vertex indices, counter-clockwise seen from the front.
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<uint32_t> triangleMaterials;  // one index into `materials` per triangle
     std::vector<Material> materials;
+    std::vector<PointLight> pointLights;
 };
 
 }  // namespace strata

@@ -1,5 +1,6 @@
 #include "path_integrator.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 
 #include "constants.h"
@@ -29,12 +30,32 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         // Reflection is two-sided: the hemisphere is on the side the ray came from.
         SurfaceHit surface = *hit;
         if (!frontFacing) surface.normal = -surface.normal;
+        // Light that reaches the camera after this vertex's reflection counts as bounce + 1
+        // bounces, which the depth allows here.
+        if (settings_.nextEventEstimation) radiance += weight * pointLightIrradiance(surface, rays);
         const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce);
         weight *= sampled.cosOverPdf;
         const glm::vec3 direction = Frame::fromNormal(surface.normal).toWorld(sampled.local);
         ray = Ray{offsetRayOrigin(surface, direction), direction};
     }
     return radiance;
+}
+
+glm::vec3 PathIntegrator::pointLightIrradiance(const SurfaceHit& surface, uint64_t& rays) const {
+    glm::vec3 irradiance(0.0f);
+    for (const PointLight& light : scene_.mesh().pointLights) {
+        const glm::vec3 toLight = light.position - surface.point;
+        const float distanceSquared = glm::dot(toLight, toLight);
+        const float distance = std::sqrt(distanceSquared);
+        const glm::vec3 direction = toLight / distance;
+        const float cosine = glm::dot(direction, surface.normal);
+        if (!(cosine > 0.0f)) continue;  // behind the surface (or on it)
+        ++rays;
+        const glm::vec3 origin = offsetRayOrigin(surface, direction);
+        if (scene_.occluded(Ray{origin, direction}, glm::length(light.position - origin))) continue;
+        irradiance += light.intensity * (cosine / distanceSquared);
+    }
+    return irradiance;
 }
 
 }  // namespace strata

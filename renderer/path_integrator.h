@@ -18,6 +18,9 @@ namespace strata {
 struct PathIntegratorSettings {
     int depth = 5;  // K, number of bounces
     SamplerKind sampler = SamplerKind::Strata24;
+    // Next-event estimation: at each scattering vertex, connect to every point light with a
+    // shadow ray. Point lights are delta lights, reachable no other way.
+    bool nextEventEstimation = false;
 };
 
 class PathIntegrator {
@@ -31,6 +34,10 @@ public:
     const PathIntegratorSettings& settings() const { return settings_; }
 
 private:
+    // Radiance from the scene's point lights reflected at `surface` (normal facing the viewer),
+    // divided by f_r: sum of I cos / r^2 over the unoccluded lights.
+    glm::vec3 pointLightIrradiance(const SurfaceHit& surface, uint64_t& rays) const;
+
     const Scene& scene_;
     PathIntegratorSettings settings_;
 };

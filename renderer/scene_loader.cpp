@@ -30,7 +30,6 @@ LoadedScene loadScene(const std::filesystem::path& objPath,
     ObjLoadReport report;
     MeshData mesh = loadObjFile(objPath, &report);
     if (mesh.triangles.empty()) throw Error(objPath.string() + ": the scene has no usable triangles");
-    Scene scene(std::move(mesh));
 
     std::filesystem::path usedCamera;
     if (cameraPath) {
@@ -39,9 +38,14 @@ LoadedScene loadScene(const std::filesystem::path& objPath,
                std::filesystem::is_regular_file(sidecar)) {
         usedCamera = sidecar;
     }
-    SceneSettings settings =
-        usedCamera.empty() ? framingSettings(scene) : loadSceneSettings(usedCamera);
-    return LoadedScene{std::move(scene), std::move(settings), report, objPath, usedCamera};
+    std::optional<SceneSettings> settings;
+    if (!usedCamera.empty()) {
+        settings = loadSceneSettings(usedCamera);
+        mesh.pointLights = settings->pointLights;
+    }
+    Scene scene(std::move(mesh));
+    if (!settings) settings = framingSettings(scene);
+    return LoadedScene{std::move(scene), std::move(*settings), report, objPath, usedCamera};
 }
 
 std::string describeScene(const LoadedScene& loaded) {
@@ -51,7 +55,7 @@ std::string describeScene(const LoadedScene& loaded) {
                   "%s: %zu triangles (%zu degenerate dropped), %zu emitting (area %.4g), "
                   "max albedo %.3g, %zu point lights",
                   loaded.objPath.string().c_str(), s.triangles, loaded.report.droppedTriangles,
-                  s.emitters, s.emittingArea, s.maxAlbedo, loaded.settings.pointLights.size());
+                  s.emitters, s.emittingArea, s.maxAlbedo, loaded.scene.mesh().pointLights.size());
     return line;
 }
 

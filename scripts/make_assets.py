@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""Writes the bundled scenes in assets/ (run from the repository root; output is committed).
+
+cornell/  The Cornell box from the published Cornell measurements (units: mm): the room, the
+          two blocks, and the 130 x 105 mm ceiling light, lowered 0.8 mm so it does not share
+          the ceiling's plane. Albedos are the usual RGB reductions of the measured spectral
+          reflectances; the light's Ke is its radiance (17, 12, 4 in the common RGB reduction).
+          Camera: the published pinhole (35 mm focal length, 25 mm film => fov_y 39.3077 deg).
+furnace/  The camera inside a closed icosphere (subdivided icosahedron), every face Kd 0.5 and
+          Ke 1 facing inward: the exact answer at depth K is (1 - 0.5^(K+1)) / 0.5.
+Every polygon is written counter-clockwise as seen from the side it faces (its front).
+"""
+import json
+import math
+import os
+
+
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(a[i] * b[i] for i in range(3))
+
+
+def facing(polygon, towards):
+    """Returns the polygon ordered so that its counter-clockwise normal points along `towards`."""
+    n = cross(sub(polygon[1], polygon[0]), sub(polygon[2], polygon[0]))
+    return polygon if dot(n, towards) > 0 else list(reversed(polygon))
+
+
+def centroid(points):
+    return [sum(p[i] for p in points) / len(points) for i in range(3)]
+
+
+def write_obj(path, header, groups):
+    lines = [f"# {line}" for line in header] + [f"mtllib {os.path.basename(path)[:-4]}.mtl"]
+    count = 0
+    for name, material, polygons in groups:
+        lines += [f"o {name}", f"usemtl {material}"]
+        for polygon in polygons:
+            for v in polygon:
+                lines.append("v " + " ".join(f"{c:.6g}" for c in v))
+            lines.append("f " + " ".join(str(count + i + 1) for i in range(len(polygon))))
+            count += len(polygon)
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def write_mtl(path, header, materials):
+    lines = [f"# {line}" for line in header]
+    for name, fields in materials:
+        lines.append(f"newmtl {name}")
+        lines += [f"{key} {' '.join(f'{c:.6g}' for c in value)}" for key, value in fields]
+        lines.append("")
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+
+
+def write_json(path, data):
+    with open(path, "w") as f:
+        json.dump(data, f, indent=2)
+        f.write("\n")
+
+
+def block(top):
+    """A block standing on the floor under its top face (4 corners at the same height)."""
+    base = [[x, 0.0, z] for x, _, z in top]
+    middle = centroid(top + base)
+    faces = [top] + [[top[i], top[(i + 1) % 4], base[(i + 1) % 4], base[i]] for i in range(4)]
+    return [facing(f, sub(centroid(f), middle)) for f in faces]  # outward
+
+
+def cornell():
+    inside = [278.0, 274.4, 279.6]
+    room = {
+        "floor": [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]],
+        "ceiling": [[556, 548.8, 0], [556, 548.8, 559.2], [0, 548.8, 559.2], [0, 548.8, 0]],
+        "back_wall": [[549.6, 0, 559.2], [0, 0, 559.2], [0, 548.8, 559.2], [556, 548.8, 559.2]],
+        "green_wall": [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]],
+        "red_wall": [[552.8, 0, 0], [549.6, 0, 559.2], [556, 548.8, 559.2], [556, 548.8, 0]],
+    }
+    materials = {"floor": "white", "ceiling": "white", "back_wall": "white",
+                 "green_wall": "green", "red_wall": "red"}
+    groups = [(n, materials[n], [facing(p, sub(inside, centroid(p)))]) for n, p in room.items()]
+    groups.append(("short_block", "white",
+                   block([[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]])))
+    groups.append(("tall_block", "white",
+                   block([[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]])))
+    light = [[343, 548.0, 227], [343, 548.0, 332], [213, 548.0, 332], [213, 548.0, 227]]
+    groups.append(("light", "light", [facing(light, [0, -1, 0])]))
+    write_obj("assets/cornell/cornell.obj",
+              ["Cornell box after the published Cornell measurements (mm).",
+               "Counter-clockwise = front. Kd: Lambertian albedo; Ke: radiance, front side only."],
+              groups)
+    write_mtl("assets/cornell/cornell.mtl",
+              ["Albedos: RGB reductions of the measured reflectance spectra. Light: Ke = radiance."],
+              [("white", [("Kd", [0.725, 0.71, 0.68])]),
+               ("red", [("Kd", [0.63, 0.065, 0.05])]),
+               ("green", [("Kd", [0.14, 0.45, 0.091])]),
+               ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])])
+    write_json("assets/cornell/cornell.json",
+               {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
+                "fov_y": 39.3077, "width": 512, "height": 512})
+
+
+def icosphere(subdivisions):
+    t = (1 + math.sqrt(5)) / 2
+    vertices = [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t],
+                [0, -1, -t], [0, 1, -t], [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]]
+    faces = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4],
+             [11, 10, 2], [10, 7, 6], [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8],
+             [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+    unit = lambda v: [c / math.sqrt(dot(v, v)) for c in v]
+    vertices = [unit(v) for v in vertices]
+    for _ in range(subdivisions):
+        midpoints = {}
+
+        def midpoint(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in midpoints:
+                vertices.append(unit([(vertices[a][i] + vertices[b][i]) / 2 for i in range(3)]))
+                midpoints[key] = len(vertices) - 1
+            return midpoints[key]
+
+        refined = []
+        for a, b, c in faces:
+            ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+            refined += [[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]
+        faces = refined
+    return vertices, faces
+
+
+def furnace():
+    radius = 1.0
+    vertices, faces = icosphere(3)
+    lines = ["# Furnace: a closed icosphere (1280 faces, radius 1), every face Kd 0.5, Ke 1 1 1,",
+             "# facing inward. Exact radiance at depth K: (1 - 0.5^(K+1)) / 0.5; 2 as K grows.",
+             "mtllib furnace.mtl", "o sphere", "usemtl furnace"]
+    lines += ["v " + " ".join(f"{radius * c:.9g}" for c in v) for v in vertices]
+    for a, b, c in faces:
+        # The icosahedron's faces are counter-clockwise seen from outside; reverse them to face in.
+        lines.append(f"f {a + 1} {c + 1} {b + 1}")
+    with open("assets/furnace/furnace.obj", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    write_mtl("assets/furnace/furnace.mtl", ["Uniform albedo 0.5 and emission 1 everywhere."],
+              [("furnace", [("Kd", [0.5, 0.5, 0.5]), ("Ke", [1, 1, 1])])])
+    write_json("assets/furnace/furnace.json",
+               {"position": [0.1, -0.05, 0.02], "look_at": [0.1, -0.05, 1.0], "up": [0, 1, 0],
+                "fov_y": 90, "width": 64, "height": 64})
+
+
+if __name__ == "__main__":
+    cornell()
+    furnace()

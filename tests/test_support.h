@@ -1,0 +1,38 @@
+#pragma once
+// Shared pieces of the test suite: paths, running the strata binary, small analytic scenes and
+// the statistics that turn "close enough" into k standard errors.
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+
+#include "mesh.h"
+
+namespace strata::test {
+
+std::filesystem::path sourceDir();
+std::filesystem::path sharedDir();
+// A fresh empty folder for one test's files.
+std::filesystem::path scratchDir(const std::string& name);
+
+struct CommandResult {
+    int exitCode;
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+// Runs the strata binary with `arguments` (already shell-quoted where needed).
+CommandResult runStrata(const std::string& arguments);
+
+// Mean and standard error of the mean of a sample.
+struct MeanEstimate {
+    double mean;
+    double standardError;
+};
+MeanEstimate estimateMean(const std::vector<double>& values);
+
+// A quad (counter-clockwise as given) appended to `mesh` with material `material`.
+void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+             const glm::vec3& d, uint32_t material);
+
+}  // namespace strata::test
