@@ -14,6 +14,15 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     strata::addRenderCommand(app);
     strata::addSamplesCommand(app);
+    // CLI11 reports a mistyped command only as "a subcommand is required"; name it instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        try {
+            app.get_subcommand(argv[1]);
+        } catch (const CLI::OptionNotFound&) {
+            std::fprintf(stderr, "strata: unknown command '%s' (see --help)\n", argv[1]);
+            return 2;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -40,10 +40,10 @@ LoadedScene RenderOptions::loadScene() const {
 }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
-    if (width < 0 || width > 65536) throw Error("--width: must be in 1..65536");
-    if (height < 0 || height > 65536) throw Error("--height: must be in 1..65536");
-    return Camera(loaded.settings.pose, width > 0 ? width : loaded.settings.width,
-                  height > 0 ? height : loaded.settings.height);
+    if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");
+    if (height && (*height < 1 || *height > 65536)) throw Error("--height: must be in 1..65536");
+    return Camera(loaded.settings.pose, width.value_or(loaded.settings.width),
+                  height.value_or(loaded.settings.height));
 }
 
 }  // namespace strata

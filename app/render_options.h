@@ -16,8 +16,8 @@ namespace strata {
 struct RenderOptions {
     std::string scene;
     std::string cameraFile;
-    int width = 0;   // 0: from the camera file
-    int height = 0;
+    std::optional<int> width;   // unset: from the camera file
+    std::optional<int> height;
     int depth = 5;
     std::string sampler = "strata24";
     uint64_t seed = 0;

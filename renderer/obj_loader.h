@@ -18,7 +18,8 @@ struct ObjLoadReport {
 // strata::Error naming the file and line on malformed input, a missing file or material.
 MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report = nullptr);
 
-// The same from memory: `objName`/`mtlName` are used in messages. Used by loadObjFile and the
+// The same from memory: `mtlText` is what the OBJ's mtllib lines load (materials are read only
+// when the OBJ has an mtllib line, as from files); `objName`/`mtlName` are used in messages. Used by loadObjFile and the
 // loader fuzzer, so both exercise one code path.
 MeshData parseObj(const std::string& objText, const std::string& objName,
                   const std::string& mtlText, const std::string& mtlName,

@@ -31,7 +31,8 @@ constexpr float uniformFloat(uint64_t bits) {
 // An integer uniform on [0, n) from 64 random bits (Lemire's multiply-shift; the bias is below
 // n / 2^64, far beneath any statistical test).
 constexpr uint32_t uniformIndex(uint64_t bits, uint32_t n) {
-    return static_cast<uint32_t>((static_cast<unsigned __int128>(bits) * n) >> 64);
+    __extension__ using Wide = unsigned __int128;  // a GCC/Clang extension, hence the marker
+    return static_cast<uint32_t>((static_cast<Wide>(bits) * n) >> 64);
 }
 
 }  // namespace strata

@@ -49,6 +49,13 @@ MeanEstimate estimateMean(const std::vector<double>& values) {
     return {mean, std::sqrt(squares / (n - 1.0) / n)};
 }
 
+double chiSquareCritical(size_t degrees) {
+    const double k = static_cast<double>(degrees);
+    constexpr double z = 3.719;  // standard normal quantile at 1 - 1e-4
+    const double a = 2.0 / (9.0 * k);
+    return k * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
+}
+
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material) {
     const auto base = static_cast<uint32_t>(mesh.positions.size());

@@ -31,6 +31,11 @@ struct MeanEstimate {
 };
 MeanEstimate estimateMean(const std::vector<double>& values);
 
+// The chi-square value that a correct sampler exceeds with probability 1e-4 (Wilson-Hilferty),
+// for `degrees` degrees of freedom. With fixed seeds the tests are deterministic; this bound
+// makes a false failure on any seed change very unlikely while still catching a wrong density.
+double chiSquareCritical(size_t degrees);
+
 // A quad (counter-clockwise as given) appended to `mesh` with material `material`.
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material);

@@ -1,0 +1,130 @@
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <set>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+std::string furnace() { return (test::sourceDir() / "assets/furnace/furnace.obj").string(); }
+std::string cornell() { return (test::sourceDir() / "assets/cornell/cornell.obj").string(); }
+
+int lineCount(const std::string& text) {
+    int lines = 0;
+    for (char c : text) lines += c == '\n' ? 1 : 0;
+    return lines;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+TEST_CASE("cli: the furnace at depth 3, 240 spp reports a mean within 1% of 1.875") {
+    const auto result = test::runStrata("render " + furnace() + " --depth 3 --spp 240 --json");
+    REQUIRE(result.exitCode == 0);
+    const auto report = nlohmann::json::parse(result.out);
+    for (const char* key : {"seconds", "spp", "paths", "rays", "paths_per_second", "rays_per_second",
+                            "mean_rgb", "nonfinite_samples"}) {
+        CHECK(report.contains(key));
+    }
+    CHECK(report["spp"] == 240);
+    CHECK(report["nonfinite_samples"] == 0);
+    CHECK(report["paths"] == 240 * 64 * 64);
+    CHECK(std::abs(report["mean_rgb"][0].get<double>() - 1.875) < 0.01 * 1.875);
+}
+
+TEST_CASE("cli: --threads 1 and --threads 2 write bit-identical images") {
+    const auto dir = test::scratchDir("cli-threads");
+    for (const char* threads : {"1", "2"}) {
+        const auto result = test::runStrata("render " + cornell() +
+                                            " --width 48 --height 32 --spp 48 --depth 4 --threads " +
+                                            threads + " --out " + (dir / (std::string(threads) + ".pfm")).string());
+        REQUIRE(result.exitCode == 0);
+    }
+    CHECK(slurp(dir / "1.pfm") == slurp(dir / "2.pfm"));
+}
+
+TEST_CASE("cli: bad options and bad files give one line naming them and a non-zero exit") {
+    const auto dir = test::scratchDir("cli-bad");
+    std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 zero\n";
+    std::ofstream(dir / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::ofstream(dir / "bad.json") << "{\"position\": [0,0,0],\n \"look_at\": }";
+    struct Case {
+        std::string arguments;
+        std::string mentions;
+    };
+    const std::vector<Case> cases = {
+        {"render " + furnace() + " --spp 25", "--spp"},
+        {"render " + furnace() + " --spp 0", "--spp"},
+        {"render " + furnace() + " --spp lots", "--spp"},
+        {"render " + furnace() + " --sampler best", "--sampler"},
+        {"render " + furnace() + " --depth -1", "--depth"},
+        {"render " + furnace() + " --threads 100000", "--threads"},
+        {"render " + furnace() + " --width 0", "--width"},
+        {"render " + furnace() + " --out image.bmp", "image.bmp"},
+        {"render " + furnace() + " --tonemap filmic", "--tonemap"},
+        {"render " + furnace() + " --bogus", "--bogus"},
+        {"render", "scene"},
+        {"render " + (dir / "absent.obj").string(), "absent.obj"},
+        {"render " + (dir / "bad.obj").string(), "bad.obj:2"},
+        {"render " + (dir / "good.obj").string() + " --camera " + (dir / "bad.json").string(), "bad.json"},
+        {"render " + (dir / "good.obj").string() + " --camera " + (dir / "nope.json").string(), "nope.json"},
+        {"samples --passes 0", "--passes"},
+        {"samples --sampler nope", "--sampler"},
+        {"frobnicate", "frobnicate"},
+    };
+    for (const auto& c : cases) {
+        const auto result = test::runStrata(c.arguments);
+        INFO("strata " << c.arguments << "\n-> exit " << result.exitCode << ", stderr: " << result.err);
+        CHECK(result.exitCode != 0);
+        CHECK(result.exitCode < 128);  // an exit, not a crash
+        CHECK(lineCount(result.err) == 1);
+        CHECK(result.err.find(c.mentions) != std::string::npos);
+    }
+}
+
+TEST_CASE("cli: a failed render leaves an existing output file untouched") {
+    const auto dir = test::scratchDir("cli-clobber");
+    const auto out = dir / "keep.png";
+    std::ofstream(out) << "precious";
+    const auto result = test::runStrata("render " + (dir / "absent.obj").string() + " --out " + out.string());
+    CHECK(result.exitCode != 0);
+    CHECK(slurp(out) == "precious");
+}
+
+TEST_CASE("cli: samples prints one CSV line per sample, every stratum once per pass and bounce") {
+    const auto result = test::runStrata("samples --sampler strata24 --passes 3 --depth 2 --seed 5");
+    REQUIRE(result.exitCode == 0);
+    std::istringstream in(result.out);
+    std::string line;
+    std::getline(in, line);
+    CHECK(line == "pass,path,bounce,stratum,x,y,z");
+    std::map<std::pair<int, int>, std::set<int>> strataByPassAndBounce;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        int pass, path, bounce, stratum;
+        double x, y, z;
+        REQUIRE(std::sscanf(line.c_str(), "%d,%d,%d,%d,%lf,%lf,%lf", &pass, &path, &bounce, &stratum,
+                            &x, &y, &z) == 7);
+        CHECK(std::abs(x * x + y * y + z * z - 1.0) < 1e-6);
+        CHECK(z >= 0.0);
+        strataByPassAndBounce[{pass, bounce}].insert(stratum);
+        ++rows;
+    }
+    CHECK(rows == 3 * 24 * 2);
+    for (const auto& [key, strata] : strataByPassAndBounce) CHECK(strata.size() == 24);
+
+    const auto uniform = test::runStrata("samples --sampler uniform --passes 1");
+    REQUIRE(uniform.exitCode == 0);
+    CHECK(uniform.out.find(",-1,") != std::string::npos);
+}

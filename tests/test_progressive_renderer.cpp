@@ -1,0 +1,66 @@
+#include <doctest/doctest.h>
+
+#include "accumulation_buffer.h"
+#include "progressive_renderer.h"
+#include "scene_loader.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+AccumulationBuffer render(const LoadedScene& loaded, const Camera& camera, SamplerKind sampler,
+                          int threads, bool inSteps) {
+    AccumulationBuffer buffer(camera.width(), camera.height());
+    ProgressiveRenderer renderer(loaded.scene, camera, {{4, sampler, false}, 1234, threads});
+    for (uint32_t pass = 0; pass < 2; ++pass) {
+        if (inSteps) {
+            for (int step = 0; step < kPathsPerPass; ++step) renderer.renderStep(buffer, pass, step);
+        } else {
+            renderer.renderPass(buffer, pass);
+        }
+    }
+    CHECK(renderer.counters().paths == 2ull * kPathsPerPass * camera.width() * camera.height());
+    return buffer;
+}
+
+void checkIdentical(const AccumulationBuffer& a, const AccumulationBuffer& b) {
+    REQUIRE(a.pixelCount() == b.pixelCount());
+    size_t differing = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i) {
+        if (a.mean(i) != b.mean(i) || a.sampleCount(i) != b.sampleCount(i) ||
+            a.completedPasses(i) != b.completedPasses(i)) {
+            ++differing;
+        }
+    }
+    CHECK(differing == 0);
+}
+}  // namespace
+
+TEST_CASE("renderer: 1, 2 and 7 threads give bit-identical images") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const Camera camera(loaded.settings.pose, 40, 30);
+    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24}) {
+        const auto one = render(loaded, camera, sampler, 1, false);
+        checkIdentical(one, render(loaded, camera, sampler, 2, false));
+        checkIdentical(one, render(loaded, camera, sampler, 7, false));
+    }
+}
+
+TEST_CASE("renderer: a pass in 24 steps equals the pass at once") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const Camera camera(loaded.settings.pose, 24, 24);
+    checkIdentical(render(loaded, camera, SamplerKind::Strata24, 2, false),
+                   render(loaded, camera, SamplerKind::Strata24, 2, true));
+}
+
+TEST_CASE("renderer: a different seed gives a different image") {
+    // The furnace: every path carries light, so every pixel's estimate depends on its samples.
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
+    const Camera camera(loaded.settings.pose, 16, 16);
+    AccumulationBuffer a(16, 16), b(16, 16);
+    ProgressiveRenderer(loaded.scene, camera, {{3, SamplerKind::Strata24, false}, 1, 0}).renderPass(a, 0);
+    ProgressiveRenderer(loaded.scene, camera, {{3, SamplerKind::Strata24, false}, 2, 0}).renderPass(b, 0);
+    size_t differing = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i) differing += a.mean(i) != b.mean(i) ? 1 : 0;
+    CHECK(differing == a.pixelCount());
+}
