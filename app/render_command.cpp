@@ -4,6 +4,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "adaptive_sampling.h"
 #include "error.h"
 #include "image_io.h"
 #include "progress.h"
@@ -19,6 +20,8 @@ struct RenderCommand {
     float exposure = 0.0f;
     std::string tonemap = "clamp";
     bool json = false;
+    double noiseThreshold = 0.0;
+    bool earlyOut = true;
 
     void run() const;
 };
@@ -31,8 +34,9 @@ void RenderCommand::run() const {
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use clamp|reinhard|aces)");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
-    const RenderSettings settings = render.renderSettings();
+    if (noiseThreshold < 0.0) throw Error("--noise-threshold: must be at least 0 (0: off)");
     const LoadedScene loaded = render.loadScene();
+    const RenderSettings settings = render.renderSettings(loaded);
     const Camera camera = render.makeCamera(loaded);
     std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
     if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
@@ -43,12 +47,21 @@ void RenderCommand::run() const {
     AccumulationBuffer buffer(camera.width(), camera.height());
     ProgressiveRenderer renderer(loaded.scene, camera, settings);
     const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
-    ProgressReporter progress("render", passes, kPathsPerPass);
-    for (uint32_t pass = 0; pass < passes; ++pass) {
-        renderer.renderPass(buffer, pass);
-        progress.update(pass + 1, renderer.counters().paths);
+    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
+    const auto dark = whyBlack(loaded.scene, settings.integrator);
+    if (dark && earlyOut) {
+        // Every path would carry zero: the exact image is black, at no cost.
+        std::fprintf(stderr, "the image is black: %s (--no-early-out renders it anyway)\n", dark->c_str());
     }
-    progress.finish(passes, renderer.counters().paths);
+    ProgressReporter progress("render", passes, kPathsPerPass);
+    uint32_t passesDone = 0;
+    while (passesDone < passes && !(dark && earlyOut)) {
+        renderer.renderPass(buffer, passesDone, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
+        ++passesDone;
+        progress.update(passesDone, renderer.counters().paths);
+        if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
+    }
+    if (passesDone > 0) progress.finish(passesDone, renderer.counters().paths);
     const double seconds = progress.elapsedSeconds();
 
     const Image image = Image::fromMeans(buffer);
@@ -77,6 +90,10 @@ void RenderCommand::run() const {
             {"rays_per_second", counters.rays / seconds},
             {"mean_rgb", {mean.x, mean.y, mean.z}},
             {"nonfinite_samples", buffer.droppedSamples()},
+            {"black_early_out", dark && earlyOut},
+            {"noise_threshold", noiseThreshold},
+            {"pixels_done_early", buffer.pixelCount() - adaptive.activePixels()},
+            {"mean_spp", static_cast<double>(counters.paths) / buffer.pixelCount()},
             {"outputs", outputs},
         };
         std::printf("%s\n", report.dump().c_str());
@@ -97,6 +114,11 @@ void addRenderCommand(CLI::App& app) {
     sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "PNG tonemap: clamp|reinhard|aces")->capture_default_str();
     sub->add_flag("--json", command->json, "Print a JSON report on stdout");
+    sub->add_option("--noise-threshold", command->noiseThreshold,
+                    "Adaptive sampling: a pixel stops at this relative standard error (0: off)")
+        ->capture_default_str();
+    sub->add_flag("!--no-early-out", command->earlyOut,
+                  "Render even a scene that cannot be anything but black");
     sub->callback([command] { command->run(); });
 }
 

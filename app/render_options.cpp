@@ -1,6 +1,9 @@
 #include "render_options.h"
 
+#include <cstdio>
+
 #include "error.h"
+#include "truncation.h"
 
 namespace strata {
 
@@ -12,6 +15,8 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
     command.add_option("--height", height, "Image height (default: from the camera file)");
     command.add_option("--depth", depth, "Recursion depth K: bounces per path (0 = emission only)")
         ->capture_default_str();
+    command.add_option("--epsilon", epsilon,
+                       "Choose K as the smallest depth whose truncation bound Le_max a^(K+1)/(1-a) <= E");
     command.add_option("--sampler", sampler, "Hemisphere sampler: " + samplerNames())
         ->capture_default_str();
     command.add_option("--seed", seed, "Random seed")->capture_default_str();
@@ -19,13 +24,27 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
     command.add_flag("--nee", nee, "Next-event estimation (point lights are reached only this way)");
 }
 
-RenderSettings RenderOptions::renderSettings() const {
+RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
     if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
     if (depth < 0 || depth > 100000) throw Error("--depth: must be in 0..100000");
     if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
+    if (epsilon) {
+        const SceneSummary& summary = loaded.scene.summary();
+        if (!loaded.scene.mesh().pointLights.empty()) {
+            throw Error("--epsilon: point lights have no radiance bound; give --depth instead");
+        }
+        const auto choice = chooseTruncationDepth(*epsilon, summary.maxAlbedo, summary.maxEmission);
+        if (!choice) {
+            throw Error("--epsilon: the scene's largest albedo is " + std::to_string(summary.maxAlbedo) +
+                        " >= 1, so no finite depth bounds the truncation error; give --depth");
+        }
+        settings.integrator.depth = choice->depth;
+        std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
+                     choice->depth, *epsilon, choice->bound, summary.maxAlbedo, summary.maxEmission);
+    }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
     settings.seed = seed;

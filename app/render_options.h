@@ -19,6 +19,7 @@ struct RenderOptions {
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
     int depth = 5;
+    std::optional<double> epsilon;  // when set, the depth comes from the truncation error
     std::string sampler = "strata24";
     uint64_t seed = 0;
     int threads = 0;
@@ -26,8 +27,9 @@ struct RenderOptions {
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);
-    // Validated settings for the renderer; throws strata::Error naming the bad option.
-    RenderSettings renderSettings() const;
+    // Validated settings for the renderer, the depth from --epsilon when given (logged on
+    // stderr); throws strata::Error naming the bad option.
+    RenderSettings renderSettings(const LoadedScene& loaded) const;
     // Loads the scene and camera; width/height options override the camera file.
     LoadedScene loadScene() const;
     Camera makeCamera(const LoadedScene& loaded) const;

@@ -8,6 +8,14 @@
 
 namespace strata {
 
+std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
+    if (scene.summary().emitters > 0) return std::nullopt;
+    if (scene.mesh().pointLights.empty()) return "the scene has no emitter (no Ke > 0, no point lights)";
+    if (!settings.nextEventEstimation) return "its only lights are point lights, which need --nee";
+    if (settings.depth == 0) return "its only lights are point lights, which depth 0 never reaches";
+    return std::nullopt;
+}
+
 glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samples,
                                    uint64_t& rays) const {
     glm::vec3 radiance(0.0f);

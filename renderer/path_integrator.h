@@ -6,6 +6,8 @@
 // K = 0 shows only directly visible emission, and a furnace of albedo rho and emission Le gives
 // Le (1 - rho^(K+1)) / (1 - rho).
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <glm/vec3.hpp>
 
 #include "direction_sampler.h"
@@ -22,6 +24,10 @@ struct PathIntegratorSettings {
     // shadow ray. Point lights are delta lights, reachable no other way.
     bool nextEventEstimation = false;
 };
+
+// Why every path of this scene carries zero radiance, or nullopt when light can reach the camera:
+// no emitting triangle, and no point light that next-event estimation would reach.
+std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings);
 
 class PathIntegrator {
 public:

@@ -33,16 +33,17 @@ ProgressiveRenderer::~ProgressiveRenderer() = default;
 
 int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency(); }
 
-void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass) {
-    render(buffer, pass, 0, kPathsPerPass);
+void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
+                                     const std::vector<uint8_t>* skip) {
+    render(buffer, pass, 0, kPathsPerPass, skip);
 }
 
 void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step) {
-    render(buffer, pass, step, step + 1);
+    render(buffer, pass, step, step + 1, nullptr);
 }
 
 void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
-                                 int endStep) {
+                                 int endStep, const std::vector<uint8_t>* skip) {
     const int width = camera_.width();
     const int height = camera_.height();
     if (buffer.width() != width || buffer.height() != height) {
@@ -60,6 +61,7 @@ void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int 
                 for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
                         const size_t pixel = static_cast<size_t>(y) * width + x;
+                        if (skip && (*skip)[pixel]) continue;
                         for (int step = firstStep; step < endStep; ++step) {
                             const PathSamples samples(settings_.seed, pixel, pass, step);
                             const Ray ray = camera_.generateRay(x, y, samples.pixelJitter());

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <vector>
 #include <tbb/task_arena.h>
 
 #include "accumulation_buffer.h"
@@ -36,8 +37,9 @@ public:
     ProgressiveRenderer(const Scene& scene, const Camera& camera, const RenderSettings& settings);
     ~ProgressiveRenderer();
 
-    // All 24 paths of pass `pass` for every pixel; closes the pass in the buffer.
-    void renderPass(AccumulationBuffer& buffer, uint32_t pass);
+    // All 24 paths of pass `pass` for every pixel; closes the pass in the buffer. Pixels whose
+    // entry in `skip` (if given, one per pixel) is non-zero are left alone: adaptive sampling.
+    void renderPass(AccumulationBuffer& buffer, uint32_t pass, const std::vector<uint8_t>* skip = nullptr);
     // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass.
     void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step);
 
@@ -46,7 +48,8 @@ public:
     int threadCount() const;
 
 private:
-    void render(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep);
+    void render(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep,
+                const std::vector<uint8_t>* skip);
 
     const Scene& scene_;
     const Camera& camera_;

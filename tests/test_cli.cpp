@@ -128,3 +128,25 @@ TEST_CASE("cli: samples prints one CSV line per sample, every stratum once per p
     REQUIRE(uniform.exitCode == 0);
     CHECK(uniform.out.find(",-1,") != std::string::npos);
 }
+
+TEST_CASE("cli: a scene that cannot be lit renders black at once and says why") {
+    const auto dir = test::scratchDir("cli-dark");
+    std::ofstream(dir / "dark.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const auto result = test::runStrata("render " + (dir / "dark.obj").string() + " --spp 48 --json");
+    REQUIRE(result.exitCode == 0);
+    const auto report = nlohmann::json::parse(result.out);
+    CHECK(report["black_early_out"] == true);
+    CHECK(report["paths"] == 0);
+    CHECK(result.err.find("no emitter") != std::string::npos);
+    const auto forced = test::runStrata("render " + (dir / "dark.obj").string() +
+                                        " --spp 24 --no-early-out --width 8 --height 8 --json");
+    REQUIRE(forced.exitCode == 0);
+    CHECK(nlohmann::json::parse(forced.out)["paths"] == 24 * 64);
+}
+
+TEST_CASE("cli: --epsilon picks the depth from the truncation bound") {
+    const auto result = test::runStrata("render " + furnace() + " --epsilon 1e-3 --spp 24 --json");
+    REQUIRE(result.exitCode == 0);
+    CHECK(nlohmann::json::parse(result.out)["depth"] == 10);
+    CHECK(result.err.find("depth K = 10") != std::string::npos);
+}
