@@ -32,7 +32,7 @@ void RenderCommand::run() const {
                     std::to_string(spp));
     }
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use clamp|reinhard|aces)");
+    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
     if (noiseThreshold < 0.0) throw Error("--noise-threshold: must be at least 0 (0: off)");
     const LoadedScene loaded = render.loadScene();
@@ -112,7 +112,7 @@ void addRenderCommand(CLI::App& app) {
     sub->add_option("--spp", command->spp, "Samples per pixel, a multiple of 24")->capture_default_str();
     sub->add_option("--out", command->outputs, "Output image(s): .exr/.pfm linear, .png sRGB (repeatable)");
     sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "PNG tonemap: clamp|reinhard|aces")->capture_default_str();
+    sub->add_option("--tonemap", command->tonemap, "PNG tonemap: " + tonemapNames())->capture_default_str();
     sub->add_flag("--json", command->json, "Print a JSON report on stdout");
     sub->add_option("--noise-threshold", command->noiseThreshold,
                     "Adaptive sampling: a pixel stops at this relative standard error (0: off)")

@@ -1,42 +1,18 @@
 #include "direction_sampler.h"
 
-#include <array>
-
 #include "hemisphere.h"
+#include "name_table.h"
 #include "strata24.h"
 
 namespace strata {
 namespace {
-struct NamedSampler {
-    std::string_view name;
-    SamplerKind kind;
-};
-constexpr std::array kSamplers{NamedSampler{"uniform", SamplerKind::Uniform},
-                               NamedSampler{"strata24", SamplerKind::Strata24}};
+constexpr NameTable<SamplerKind, 2> kSamplers{{{{"uniform", SamplerKind::Uniform},
+                                                {"strata24", SamplerKind::Strata24}}}};
 }  // namespace
 
-std::optional<SamplerKind> parseSamplerKind(std::string_view name) {
-    for (const auto& s : kSamplers) {
-        if (s.name == name) return s.kind;
-    }
-    return std::nullopt;
-}
-
-std::string_view samplerName(SamplerKind kind) {
-    for (const auto& s : kSamplers) {
-        if (s.kind == kind) return s.name;
-    }
-    return "unknown";
-}
-
-std::string samplerNames() {
-    std::string names;
-    for (const auto& s : kSamplers) {
-        if (!names.empty()) names += '|';
-        names += s.name;
-    }
-    return names;
-}
+std::optional<SamplerKind> parseSamplerKind(std::string_view name) { return kSamplers.parse(name); }
+std::string_view samplerName(SamplerKind kind) { return kSamplers.name(kind); }
+std::string samplerNames() { return kSamplers.joined(); }
 
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce) {
     const glm::vec2 u = samples.bouncePoint(bounce);

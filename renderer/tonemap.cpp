@@ -1,34 +1,20 @@
 #include "tonemap.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <glm/common.hpp>
 
+#include "name_table.h"
+
 namespace strata {
 namespace {
-struct NamedTonemap {
-    std::string_view name;
-    Tonemap tonemap;
-};
-constexpr std::array kTonemaps{NamedTonemap{"clamp", Tonemap::Clamp},
-                               NamedTonemap{"reinhard", Tonemap::Reinhard},
-                               NamedTonemap{"aces", Tonemap::Aces}};
+constexpr NameTable<Tonemap, 3> kTonemaps{
+    {{{"clamp", Tonemap::Clamp}, {"reinhard", Tonemap::Reinhard}, {"aces", Tonemap::Aces}}}};
 }  // namespace
 
-std::optional<Tonemap> parseTonemap(std::string_view name) {
-    for (const auto& t : kTonemaps) {
-        if (t.name == name) return t.tonemap;
-    }
-    return std::nullopt;
-}
-
-std::string_view tonemapName(Tonemap tonemap) {
-    for (const auto& t : kTonemaps) {
-        if (t.tonemap == tonemap) return t.name;
-    }
-    return "unknown";
-}
+std::optional<Tonemap> parseTonemap(std::string_view name) { return kTonemaps.parse(name); }
+std::string_view tonemapName(Tonemap tonemap) { return kTonemaps.name(tonemap); }
+std::string tonemapNames() { return kTonemaps.joined(); }
 
 glm::vec3 applyTonemap(const glm::vec3& linear, float exposure, Tonemap tonemap) {
     const glm::vec3 x = glm::max(linear, glm::vec3(0.0f)) * std::exp2(exposure);

@@ -3,6 +3,7 @@
 // the same functions in GLSL; its tests compare against these.
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <glm/vec3.hpp>
 
@@ -12,6 +13,8 @@ enum class Tonemap { Clamp, Reinhard, Aces };
 
 std::optional<Tonemap> parseTonemap(std::string_view name);
 std::string_view tonemapName(Tonemap tonemap);
+// "clamp|reinhard|aces", for option help and error messages.
+std::string tonemapNames();
 
 // exposure is in stops: the radiance is scaled by 2^exposure before the curve.
 glm::vec3 applyTonemap(const glm::vec3& linear, float exposure, Tonemap tonemap);
