@@ -2,11 +2,15 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
 #include "image_io.h"
+#include "pass_partition.h"
 #include "progress.h"
+#include "render_job.h"
 #include "render_options.h"
 
 namespace strata {
@@ -20,10 +24,15 @@ struct RenderCommand {
     std::string tonemap = "clamp";
     bool json = false;
 
+    struct Checked {
+        RenderSettings settings;
+        Tonemap tonemap;
+    };
+    Checked checkOptions() const;
     void run() const;
 };
 
-void RenderCommand::run() const {
+RenderCommand::Checked RenderCommand::checkOptions() const {
     if (spp < kPathsPerPass || spp % kPathsPerPass != 0) {
         throw Error("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
                     std::to_string(spp));
@@ -31,33 +40,60 @@ void RenderCommand::run() const {
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use clamp|reinhard|aces)");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
-    const RenderSettings settings = render.renderSettings();
-    const LoadedScene loaded = render.loadScene();
-    const Camera camera = render.makeCamera(loaded);
-    std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
-    if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
-        std::fprintf(stderr, "note: the scene's point lights need --nee; without it they are dark\n");
-    }
-    if (outputs.empty()) std::fprintf(stderr, "note: no --out given, no image will be written\n");
+    return {render.renderSettings(), *tonemapKind};
+}
 
-    AccumulationBuffer buffer(camera.width(), camera.height());
-    ProgressiveRenderer renderer(loaded.scene, camera, settings);
-    const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
-    ProgressReporter progress("render", passes, kPathsPerPass);
-    for (uint32_t pass = 0; pass < passes; ++pass) {
-        renderer.renderPass(buffer, pass);
-        progress.update(pass + 1, renderer.counters().paths);
+void RenderCommand::run() const {
+    // Under mpirun the ranks split the passes (render_job.h); every step that can fail runs on all
+    // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
+    RenderJob job;
+    const auto [settings, tonemapKind] = job.collectively([&] { return checkOptions(); });
+    const SceneFiles files = job.shareSceneFiles([&] { return render.readSceneFiles(); });
+    const LoadedScene loaded = job.collectively([&] { return parseScene(files); });
+    const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
+    if (job.isRoot()) {
+        std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
+        if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
+            std::fprintf(stderr, "note: the scene's point lights need --nee; without it they are dark\n");
+        }
+        if (outputs.empty()) std::fprintf(stderr, "note: no --out given, no image will be written\n");
     }
-    progress.finish(passes, renderer.counters().paths);
-    const double seconds = progress.elapsedSeconds();
+
+    const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
+    const PassRange mine = passesOfRank(passes, job.rank(), job.ranks());
+    AccumulationBuffer buffer =
+        job.collectively([&] { return AccumulationBuffer(camera.width(), camera.height()); });
+    ProgressiveRenderer renderer(loaded.scene, camera, settings);
+    // Rank 0 reports the progress of its own passes: it has the largest share and the ranks run
+    // alike, so its share is the job's progress, but only an estimate of it; the label says so.
+    const std::string label = job.ranks() == 1
+        ? "render"
+        : "render, rank 0's share (passes " + std::to_string(mine.begin + 1) + "-" +
+              std::to_string(mine.end) + " of " + std::to_string(passes) + ")";
+    std::optional<ProgressReporter> progress;
+    if (job.isRoot()) progress.emplace(label, mine.size(), kPathsPerPass);
+    job.collectively([&] {
+        for (uint32_t pass = mine.begin; pass < mine.end; ++pass) {
+            renderer.renderPass(buffer, pass);
+            if (progress) progress->update(pass - mine.begin + 1, renderer.counters().paths);
+        }
+    });
+    if (progress) progress->finish(mine.size(), renderer.counters().paths);
+    RenderCounters counters = renderer.counters();
+    job.reduce(buffer, counters);
+    if (!job.isRoot()) return;
+    const double seconds = progress->elapsedSeconds();
+    if (job.ranks() > 1) {
+        std::fprintf(stderr, "render: %u passes (%d spp) on %d ranks in %.1fs, %.2f Msamples/s for the whole job\n",
+                     passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
+    }
 
     const Image image = Image::fromMeans(buffer);
     for (const auto& out : outputs) {
-        writeImage(out, image, PngSettings{exposure, *tonemapKind});
+        writeImage(out, image, PngSettings{exposure, tonemapKind});
         std::fprintf(stderr, "wrote %s\n", out.c_str());
     }
 
-    const RenderCounters counters = renderer.counters();
     const glm::dvec3 mean = buffer.imageMean();
     if (json) {
         nlohmann::json report{
@@ -67,7 +103,8 @@ void RenderCommand::run() const {
             {"sampler", samplerName(settings.integrator.sampler)},
             {"depth", settings.integrator.depth},
             {"seed", settings.seed},
-            {"threads", renderer.threadCount()},
+            {"ranks", job.ranks()},
+            {"threads", renderer.threadCount()},  // per rank
             {"seconds", seconds},
             {"spp", spp},
             {"passes", passes},

@@ -28,8 +28,11 @@ struct RenderOptions {
     void addTo(CLI::App& command, bool sceneRequired);
     // Validated settings for the renderer; throws strata::Error naming the bad option.
     RenderSettings renderSettings() const;
-    // Loads the scene and camera; width/height options override the camera file.
+    // Reads the scene's files (OBJ, MTL, camera JSON) without parsing them.
+    SceneFiles readSceneFiles() const;
+    // Loads the scene and camera: parseScene(readSceneFiles()).
     LoadedScene loadScene() const;
+    // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;
 };
 
