@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
@@ -64,6 +65,15 @@ void RenderCommand::run() const {
     AccumulationBuffer buffer =
         job.collectively([&] { return AccumulationBuffer(camera.width(), camera.height()); });
     ProgressiveRenderer renderer(loaded.scene, camera, settings);
+    // mpirun binds each rank to a core (for 2 ranks or fewer) or a socket unless told otherwise,
+    // and TBB keeps to the cores a process may use: say so when that leaves cores idle.
+    if (job.underMpi() && job.isRoot() && settings.threads == 0 &&
+        renderer.threadCount() < static_cast<int>(std::thread::hardware_concurrency())) {
+        std::fprintf(stderr,
+                     "note: rank 0 renders with %d of its host's %u hardware threads because mpirun "
+                     "bound it to fewer cores; run mpirun with --bind-to none to use them all\n",
+                     renderer.threadCount(), std::thread::hardware_concurrency());
+    }
     // Rank 0 reports the progress of its own passes: it has the largest share and the ranks run
     // alike, so its share is the job's progress, but only an estimate of it; the label says so.
     const std::string label = job.ranks() == 1

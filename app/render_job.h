@@ -29,6 +29,8 @@ public:
     int rank() const { return rank_; }
     int ranks() const { return ranks_; }
     bool isRoot() const { return rank_ == 0; }
+    // Started by an MPI launcher (even with one rank).
+    bool underMpi() const { return mpi_; }
 
     // Runs `step` on every rank, then all ranks compare notes: when it threw anywhere, every rank
     // throws (rank 0 the failure of the lowest failing rank, named "rank N" when not its own; the
