@@ -55,9 +55,12 @@ void RenderCommand::run() const {
     if (job.isRoot()) {
         std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
-            std::fprintf(stderr, "note: the scene's point lights need --nee; without it they are dark\n");
+            std::fprintf(stderr,
+                         "note: the scene's point lights need --nee; without it they are dark\n");
         }
-        if (outputs.empty()) std::fprintf(stderr, "note: no --out given, no image will be written\n");
+        if (outputs.empty()) {
+            std::fprintf(stderr, "note: no --out given, no image will be written\n");
+        }
     }
 
     const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
@@ -70,8 +73,9 @@ void RenderCommand::run() const {
     if (job.underMpi() && job.isRoot() && settings.threads == 0 &&
         renderer.threadCount() < static_cast<int>(std::thread::hardware_concurrency())) {
         std::fprintf(stderr,
-                     "note: rank 0 renders with %d of its host's %u hardware threads because mpirun "
-                     "bound it to fewer cores; run mpirun with --bind-to none to use them all\n",
+                     "note: rank 0 renders with %d of its host's %u hardware threads because "
+                     "mpirun bound it to fewer cores; run mpirun with --bind-to none to use them "
+                     "all\n",
                      renderer.threadCount(), std::thread::hardware_concurrency());
     }
     // Rank 0 reports the progress of its own passes: it has the largest share and the ranks run
@@ -94,7 +98,9 @@ void RenderCommand::run() const {
     if (!job.isRoot()) return;
     const double seconds = progress->elapsedSeconds();
     if (job.ranks() > 1) {
-        std::fprintf(stderr, "render: %u passes (%d spp) on %d ranks in %.1fs, %.2f Msamples/s for the whole job\n",
+        std::fprintf(stderr,
+                     "render: %u passes (%d spp) on %d ranks in %.1fs, %.2f Msamples/s for the "
+                     "whole job\n",
                      passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
     }
 

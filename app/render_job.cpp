@@ -20,7 +20,8 @@ namespace {
 // PMI_RANK. Started any other way the program is one process and never initialises MPI, so a
 // plain `strata render` is the same program as in a build without MPI.
 bool launchedByMpi() {
-    return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+    return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") ||
+           std::getenv("PMI_RANK");
 }
 
 // MPI counts are ints; larger arrays go in pieces.
@@ -139,14 +140,14 @@ SceneFiles RenderJob::shareSceneFiles(const std::function<SceneFiles()>& read) {
 // the MPI standard leaves to the implementation (a tree, for Open MPI's larger jobs). The counts
 // are integers and add exactly. Each double is a sum of n = spp values (fewer for the pass
 // statistics); any two orders of summing n non-negative values lie within gamma_{n-1} =
-// (n-1)u/(1-(n-1)u), u = 2^-53, of the exact sum relative to it (Higham, Accuracy and Stability of
-// Numerical Algorithms, 2nd ed., §4.2), hence within 2*gamma_{n-1} of each other: 5.3e-14 at
-// 240 spp. Strata's radiance is non-negative (Kd, Ke >= 0 are enforced; only a point light given a
-// negative intensity would break this, and make the bound relative to the sum of magnitudes
-// instead), so after the division by n and the rounding to float an output pixel equals the single-process one or is one float ulp
-// (2^-23 relative) away, when the double lies next to a rounding boundary. tests/test_mpi_render.cpp
-// checks exactly that bound against the single-process render, and tests/test_accumulation_buffer.cpp
-// the double-level bound for buffers combined from disjoint passes.
+// (n-1)u/(1-(n-1)u), u = 2^-53, of the exact sum relative to it (Higham, Accuracy and Stability
+// of Numerical Algorithms, 2nd ed., §4.2), hence within 2*gamma_{n-1} of each other: 5.3e-14 at
+// 240 spp. Strata's radiance is non-negative (Kd, Ke >= 0 are enforced; only a point light given
+// a negative intensity would break this, and make the bound relative to the sum of magnitudes
+// instead), so after the division by n and the rounding to float an output pixel channel equals
+// the single-process one or is the adjacent float (2^-23 relative), when the double lies next to
+// a rounding boundary. tests/test_mpi_render.cpp checks that bound against the single-process
+// render, tests/test_accumulation_buffer.cpp the double-level bound for combined buffers.
 void RenderJob::reduce([[maybe_unused]] AccumulationBuffer& buffer,
                        [[maybe_unused]] RenderCounters& counters) {
     if (!mpi_) return;

@@ -65,7 +65,8 @@ TEST_CASE("camera: JSON sidecar is read, and bad files name the file and the pro
 }
 
 TEST_CASE("camera: the JSON text parses from memory as from its file, errors name the given name") {
-    const std::string text = R"({"position":[0,1,2],"look_at":[0,1,0],"up":[0,1,0],"fov_y":30,"width":8})";
+    const std::string text =
+        R"({"position":[0,1,2],"look_at":[0,1,0],"up":[0,1,0],"fov_y":30,"width":8})";
     const auto dir = test::scratchDir("camera-memory");
     std::ofstream(dir / "c.json") << text;
     const SceneSettings fromFile = loadSceneSettings(dir / "c.json");
@@ -77,6 +78,7 @@ TEST_CASE("camera: the JSON text parses from memory as from its file, errors nam
         parseSceneSettings(R"({"position":[0,0,0]})", "broadcast.json");
         FAIL("no error");
     } catch (const Error& e) {
-        CHECK(std::string(e.what()).find("broadcast.json: missing key \"look_at\"") != std::string::npos);
+        CHECK(std::string(e.what()).find("broadcast.json: missing key \"look_at\"") !=
+              std::string::npos);
     }
 }

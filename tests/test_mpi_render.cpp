@@ -27,7 +27,9 @@ std::string cornell() { return (test::sourceDir() / "assets/cornell/cornell.obj"
 
 size_t occurrences(const std::string& text, const std::string& part) {
     size_t count = 0;
-    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) {
+        ++count;
+    }
     return count;
 }
 
@@ -43,8 +45,8 @@ TEST_CASE("mpi render: 2 ranks give the single-process image") {
                                   " --width 24 --height 20 --spp 120 --seed 11 --threads 1 --json";
     const auto single = test::runStrata(arguments + " --out " + (dir / "single.exr").string());
     REQUIRE_MESSAGE(single.exitCode == 0, single.err);
-    const auto distributed = test::runCommand(mpirun() + " -np 2 " + strataBinary() + " " + arguments +
-                                              " --out " + (dir / "mpi.exr").string());
+    const auto distributed = test::runCommand(mpirun() + " -np 2 " + strataBinary() + " " +
+                                              arguments + " --out " + (dir / "mpi.exr").string());
     REQUIRE_MESSAGE(distributed.exitCode == 0, distributed.err);
     CHECK(distributed.out.find("\"ranks\":2") != std::string::npos);
     CHECK(occurrences(distributed.out, "\"paths\":") == 1);  // one report, from rank 0
@@ -61,7 +63,8 @@ TEST_CASE("mpi render: 2 ranks give the single-process image") {
         for (int c = 0; c < 3; ++c) {
             const float x = a.pixels[i][c];
             const float y = b.pixels[i][c];
-            CHECK((y == x || y == std::nextafter(x, INFINITY) || y == std::nextafter(x, -INFINITY)));
+            CHECK((y == x || y == std::nextafter(x, INFINITY) ||
+                   y == std::nextafter(x, -INFINITY)));
             identical += x == y;
             lit += x > 0.0f;
         }
@@ -77,8 +80,9 @@ TEST_CASE("mpi render: a failing rank ends the job with one clear error and no o
                                   out.string();
 
     // Rank 1 alone fails (its own options differ: Open MPI's MPMD form A : B).
-    const auto oneRank = test::runCommand(mpirun() + " -np 1 " + strataBinary() + " " + arguments + " : -np 1 " +
-                                          strataBinary() + " " + arguments + " --tonemap bogus");
+    const auto oneRank =
+        test::runCommand(mpirun() + " -np 1 " + strataBinary() + " " + arguments + " : -np 1 " +
+                         strataBinary() + " " + arguments + " --tonemap bogus");
     CHECK(oneRank.exitCode != 0);
     CHECK(occurrences(oneRank.err, "strata: rank 1 of 2: --tonemap: unknown tonemap 'bogus'") == 1);
     CHECK(!std::filesystem::exists(out));
@@ -98,8 +102,9 @@ TEST_CASE("mpi render: a killed rank ends the job without an output file") {
     const std::string arguments = "render " + cornell() +
                                   " --width 128 --height 128 --spp 24000 --threads 1 --out " +
                                   (dir / "out.exr").string();
-    const auto killed = test::runCommand(mpirun() + " -np 1 " + strataBinary() + " " + arguments +
-                                         " : -np 1 timeout -s KILL 2 " + strataBinary() + " " + arguments);
+    const auto killed =
+        test::runCommand(mpirun() + " -np 1 " + strataBinary() + " " + arguments +
+                         " : -np 1 timeout -s KILL 2 " + strataBinary() + " " + arguments);
     CHECK(killed.exitCode != 0);
     CHECK(killed.err.find("rank 1") != std::string::npos);  // mpirun names the lost rank
     CHECK(std::filesystem::is_empty(dir));                  // no output, no temporary file
