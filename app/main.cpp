@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "render_command.h"
+#include "render_job.h"
 #include "samples_command.h"
 
 int main(int argc, char** argv) {
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "strata: %s (see --help)\n", e.what());
         return 2;
+    } catch (const strata::ErrorReportedByRankZero&) {
+        return 1;  // an MPI rank other than 0: rank 0 printed the job's error
     } catch (const strata::Error& e) {
         std::fprintf(stderr, "strata: %s\n", e.what());
         return 1;

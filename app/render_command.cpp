@@ -2,12 +2,17 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "adaptive_sampling.h"
 #include "error.h"
 #include "image_io.h"
+#include "pass_partition.h"
 #include "progress.h"
+#include "render_job.h"
 #include "render_options.h"
 
 namespace strata {
@@ -23,10 +28,12 @@ struct RenderCommand {
     double noiseThreshold = 0.0;
     bool earlyOut = true;
 
+    // The checks that need no scene, so a bad option fails before a large scene is read.
+    Tonemap checkOptions(int ranks) const;
     void run() const;
 };
 
-void RenderCommand::run() const {
+Tonemap RenderCommand::checkOptions(int ranks) const {
     if (spp < kPathsPerPass || spp % kPathsPerPass != 0) {
         throw Error("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
                     std::to_string(spp));
@@ -35,42 +42,90 @@ void RenderCommand::run() const {
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
     if (noiseThreshold < 0.0) throw Error("--noise-threshold: must be at least 0 (0: off)");
-    const LoadedScene loaded = render.loadScene();
-    const RenderSettings settings = render.renderSettings(loaded);
-    const Camera camera = render.makeCamera(loaded);
-    std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
-    if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
-        std::fprintf(stderr, "note: the scene's point lights need --nee; without it they are dark\n");
-    }
-    if (outputs.empty()) std::fprintf(stderr, "note: no --out given, no image will be written\n");
+    // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
+    if (noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
+    return *tonemapKind;
+}
 
-    AccumulationBuffer buffer(camera.width(), camera.height());
-    ProgressiveRenderer renderer(loaded.scene, camera, settings);
-    const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
-    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
+void RenderCommand::run() const {
+    // Under mpirun the ranks split the passes (render_job.h); every step that can fail runs on all
+    // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
+    RenderJob job;
+    const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
+    const SceneFiles files = job.shareSceneFiles([&] { return render.readSceneFiles(); });
+    const LoadedScene loaded = job.collectively([&] { return parseScene(files); });
+    const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded); });
+    const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
-    if (dark && earlyOut) {
-        // Every path would carry zero: the exact image is black, at no cost.
-        std::fprintf(stderr, "the image is black: %s (--no-early-out renders it anyway)\n", dark->c_str());
+    if (job.isRoot()) {
+        std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
+        if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
+            std::fprintf(stderr,
+                         "note: the scene's point lights need --nee; without it they are dark\n");
+        }
+        if (outputs.empty()) {
+            std::fprintf(stderr, "note: no --out given, no image will be written\n");
+        }
+        if (dark && earlyOut) {
+            // Every path would carry zero: the exact image is black, at no cost.
+            std::fprintf(stderr, "the image is black: %s (--no-early-out renders it anyway)\n",
+                         dark->c_str());
+        }
     }
-    ProgressReporter progress("render", passes, kPathsPerPass);
+
+    const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
+    const PassRange mine = dark && earlyOut ? PassRange{0, 0}
+                                            : passesOfRank(passes, job.rank(), job.ranks());
+    AccumulationBuffer buffer =
+        job.collectively([&] { return AccumulationBuffer(camera.width(), camera.height()); });
+    ProgressiveRenderer renderer(loaded.scene, camera, settings);
+    // mpirun binds each rank to a core (for 2 ranks or fewer) or a socket unless told otherwise,
+    // and TBB keeps to the cores a process may use: say so when that leaves cores idle.
+    if (job.underMpi() && job.isRoot() && settings.threads == 0 &&
+        renderer.threadCount() < static_cast<int>(std::thread::hardware_concurrency())) {
+        std::fprintf(stderr,
+                     "note: rank 0 renders with %d of its host's %u hardware threads because "
+                     "mpirun bound it to fewer cores; run mpirun with --bind-to none to use them "
+                     "all\n",
+                     renderer.threadCount(), std::thread::hardware_concurrency());
+    }
+    // Rank 0 reports the progress of its own passes: it has the largest share and the ranks run
+    // alike, so its share is the job's progress, but only an estimate of it; the label says so.
+    const std::string label = job.ranks() == 1
+        ? "render"
+        : "render, rank 0's share (passes " + std::to_string(mine.begin + 1) + "-" +
+              std::to_string(mine.end) + " of " + std::to_string(passes) + ")";
+    std::optional<ProgressReporter> progress;
+    if (job.isRoot()) progress.emplace(label, mine.size(), kPathsPerPass);
+    // Adaptive sampling (single process only: checkOptions refuses it under MPI).
+    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
     uint32_t passesDone = 0;
-    while (passesDone < passes && !(dark && earlyOut)) {
-        renderer.renderPass(buffer, passesDone, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
-        ++passesDone;
-        progress.update(passesDone, renderer.counters().paths);
-        if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
+    job.collectively([&] {
+        for (uint32_t pass = mine.begin; pass < mine.end; ++pass) {
+            renderer.renderPass(buffer, pass, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
+            ++passesDone;
+            if (progress) progress->update(passesDone, renderer.counters().paths);
+            if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
+        }
+    });
+    if (progress && passesDone > 0) progress->finish(passesDone, renderer.counters().paths);
+    RenderCounters counters = renderer.counters();
+    job.reduce(buffer, counters);
+    if (!job.isRoot()) return;
+    const double seconds = progress->elapsedSeconds();
+    if (job.ranks() > 1) {
+        std::fprintf(stderr,
+                     "render: %u passes (%d spp) on %d ranks in %.1fs, %.2f Msamples/s for the "
+                     "whole job\n",
+                     passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
     }
-    if (passesDone > 0) progress.finish(passesDone, renderer.counters().paths);
-    const double seconds = progress.elapsedSeconds();
 
     const Image image = Image::fromMeans(buffer);
     for (const auto& out : outputs) {
-        writeImage(out, image, PngSettings{exposure, *tonemapKind});
+        writeImage(out, image, PngSettings{exposure, tonemapKind});
         std::fprintf(stderr, "wrote %s\n", out.c_str());
     }
 
-    const RenderCounters counters = renderer.counters();
     const glm::dvec3 mean = buffer.imageMean();
     if (json) {
         nlohmann::json report{
@@ -80,7 +135,8 @@ void RenderCommand::run() const {
             {"sampler", samplerName(settings.integrator.sampler)},
             {"depth", settings.integrator.depth},
             {"seed", settings.seed},
-            {"threads", renderer.threadCount()},
+            {"ranks", job.ranks()},
+            {"threads", renderer.threadCount()},  // per rank
             {"seconds", seconds},
             {"spp", spp},
             {"passes", passes},

@@ -52,11 +52,13 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     return settings;
 }
 
-LoadedScene RenderOptions::loadScene() const {
+SceneFiles RenderOptions::readSceneFiles() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::loadScene(scene, cameraPath);
+    return strata::readSceneFiles(scene, cameraPath);
 }
+
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneFiles()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
     if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");

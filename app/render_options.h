@@ -30,8 +30,11 @@ struct RenderOptions {
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const LoadedScene& loaded) const;
-    // Loads the scene and camera; width/height options override the camera file.
+    // Reads the scene's files (OBJ, MTL, camera JSON) without parsing them.
+    SceneFiles readSceneFiles() const;
+    // Loads the scene and camera: parseScene(readSceneFiles()).
     LoadedScene loadScene() const;
+    // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;
 };
 

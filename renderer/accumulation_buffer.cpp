@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "error.h"
 
@@ -89,6 +90,16 @@ glm::dvec3 AccumulationBuffer::imageMean() const {
     glm::dvec3 total(0.0);
     for (size_t i = 0; i < pixelCount(); ++i) total += mean(i);
     return total / static_cast<double>(pixelCount());
+}
+
+std::array<std::span<double>, 5> AccumulationBuffer::realArrays() {
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "the RGB sums must be packed doubles");
+    return {std::span<double>(glm::value_ptr(sum_[0]), 3 * sum_.size()), luminanceSquares_,
+            openPassLuminance_, passMeanSum_, passMeanSquares_};
+}
+
+std::array<std::span<uint32_t>, 4> AccumulationBuffer::countArrays() {
+    return {sampleCount_, dropped_, openPassSamples_, passCount_};
 }
 
 }  // namespace strata

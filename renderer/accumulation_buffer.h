@@ -7,7 +7,9 @@
 //   - the spread of per-pass means: right for strata24, whose 24 paths in a pass are not
 //     independent (per-sample variance overstates a stratified estimator's error).
 // A non-finite sample (NaN or Inf) is dropped and counted, never added.
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 #include <glm/vec3.hpp>
 
@@ -38,6 +40,14 @@ public:
     uint64_t droppedSamples() const;
     // Mean of all pixel means (linear RGB).
     glm::dvec3 imageMean() const;
+
+    // The buffer's whole state as flat arrays in a fixed order (the RGB sums as 3 doubles a pixel).
+    // Every entry is a sum over samples or passes, so buffers of one image that saw disjoint passes
+    // combine by element-wise addition: that is how the MPI ranks' buffers are reduced
+    // (app/render_job.cpp). Counts add exactly; the doubles' sum depends on the order of
+    // additions, by at most a few ulps relative for non-negative radiance (see render_job.cpp).
+    std::array<std::span<double>, 5> realArrays();
+    std::array<std::span<uint32_t>, 4> countArrays();
 
 private:
     int width_;

@@ -1,39 +1,39 @@
 #include "camera.h"
 
 #include <cmath>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
+#include "text_file.h"
 
 namespace strata {
 namespace {
 
 using nlohmann::json;
 
-glm::vec3 readVec3(const json& object, const char* key, const std::filesystem::path& path) {
+glm::vec3 readVec3(const json& object, const char* key, const std::string& name) {
     const auto it = object.find(key);
     if (it == object.end()) {
-        throw Error(path.string() + ": missing key \"" + key + "\"");
+        throw Error(name + ": missing key \"" + key + "\"");
     }
     if (!it->is_array() || it->size() != 3 || !(*it)[0].is_number() || !(*it)[1].is_number() ||
         !(*it)[2].is_number()) {
-        throw Error(path.string() + ": \"" + key + "\" must be an array of 3 numbers");
+        throw Error(name + ": \"" + key + "\" must be an array of 3 numbers");
     }
     const glm::vec3 v((*it)[0].get<double>(), (*it)[1].get<double>(), (*it)[2].get<double>());
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-        throw Error(path.string() + ": \"" + key + "\" must be finite");
+        throw Error(name + ": \"" + key + "\" must be finite");
     }
     return v;
 }
 
-int readSize(const json& object, const char* key, int fallback, const std::filesystem::path& path) {
+int readSize(const json& object, const char* key, int fallback, const std::string& name) {
     const auto it = object.find(key);
     if (it == object.end()) return fallback;
     if (!it->is_number_integer() || it->get<int64_t>() < 1 || it->get<int64_t>() > 65536) {
-        throw Error(path.string() + ": \"" + key + "\" must be an integer in 1..65536");
+        throw Error(name + ": \"" + key + "\" must be an integer in 1..65536");
     }
     return static_cast<int>(it->get<int64_t>());
 }
@@ -41,48 +41,50 @@ int readSize(const json& object, const char* key, int fallback, const std::files
 }  // namespace
 
 SceneSettings loadSceneSettings(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path.string() + ": cannot open camera file");
+    return parseSceneSettings(readTextFile(path, "camera file"), path.string());
+}
+
+SceneSettings parseSceneSettings(const std::string& text, const std::string& name) {
     json root;
     try {
-        root = json::parse(in);
+        root = json::parse(text);
     } catch (const json::parse_error& e) {
         // nlohmann's message reads "[json.exception.parse_error.N] parse error at line L,
         // column C: ..."; drop the bracketed id, keep the position and the explanation.
         const std::string what = e.what();
         const auto bracket = what.find("] ");
-        throw Error(path.string() + ": invalid JSON: " +
+        throw Error(name + ": invalid JSON: " +
                     (bracket == std::string::npos ? what : what.substr(bracket + 2)));
     }
-    if (!root.is_object()) throw Error(path.string() + ": expected a JSON object");
+    if (!root.is_object()) throw Error(name + ": expected a JSON object");
 
     SceneSettings settings;
-    settings.pose.position = readVec3(root, "position", path);
-    settings.pose.lookAt = readVec3(root, "look_at", path);
-    settings.pose.up = readVec3(root, "up", path);
+    settings.pose.position = readVec3(root, "position", name);
+    settings.pose.lookAt = readVec3(root, "look_at", name);
+    settings.pose.up = readVec3(root, "up", name);
     const auto fov = root.find("fov_y");
     if (fov == root.end() || !fov->is_number()) {
-        throw Error(path.string() + ": \"fov_y\" must be a number (degrees)");
+        throw Error(name + ": \"fov_y\" must be a number (degrees)");
     }
     settings.pose.fovYDegrees = fov->get<float>();
-    settings.width = readSize(root, "width", settings.width, path);
-    settings.height = readSize(root, "height", settings.height, path);
+    settings.width = readSize(root, "width", settings.width, name);
+    settings.height = readSize(root, "height", settings.height, name);
 
     if (const auto lights = root.find("point_lights"); lights != root.end()) {
-        if (!lights->is_array()) throw Error(path.string() + ": \"point_lights\" must be an array");
+        if (!lights->is_array()) throw Error(name + ": \"point_lights\" must be an array");
         for (const auto& light : *lights) {
             if (!light.is_object()) {
-                throw Error(path.string() + ": each of \"point_lights\" must be an object");
+                throw Error(name + ": each of \"point_lights\" must be an object");
             }
             settings.pointLights.push_back(
-                {readVec3(light, "position", path), readVec3(light, "intensity", path)});
+                {readVec3(light, "position", name), readVec3(light, "intensity", name)});
         }
     }
     // Validate the pose now, so a bad file is reported as the file's fault.
     try {
         Camera(settings.pose, settings.width, settings.height);
     } catch (const Error& e) {
-        throw Error(path.string() + ": " + e.what());
+        throw Error(name + ": " + e.what());
     }
     return settings;
 }

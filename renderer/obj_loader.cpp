@@ -2,8 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string_view>
 #include <vector>
 #include <glm/common.hpp>
@@ -11,17 +9,10 @@
 #include <tiny_obj_loader.h>
 
 #include "error.h"
+#include "text_file.h"
 
 namespace strata {
 namespace {
-
-std::string readText(const std::filesystem::path& path, const char* what) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path.string() + ": cannot open " + what);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::vector<std::string_view> splitWords(std::string_view line) {
     std::vector<std::string_view> words;
@@ -252,19 +243,23 @@ MeshData parseObj(const std::string& objText, const std::string& objName,
     return buildMesh(objText, objName, mtlText, mtlName, report);
 }
 
-MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
-    const std::string objText = readText(path, "scene");
-    std::string mtlText;
-    std::string mtlNames;
-    for (const auto& library : validateObj(objText, path.string())) {
+ObjFiles readObjFiles(const std::filesystem::path& path) {
+    ObjFiles files{readTextFile(path, "scene"), path.string(), "", ""};
+    // Each MTL file is validated on its own so that a bad line is reported with its file and line.
+    for (const auto& library : validateObj(files.objText, files.objName)) {
         const auto mtlPath = path.parent_path() / library;
-        const std::string text = readText(mtlPath, "material library (named by mtllib)");
+        const std::string text = readTextFile(mtlPath, "material library (named by mtllib)");
         validateMtl(text, mtlPath.string());
-        mtlText += text + "\n";
-        mtlNames += (mtlNames.empty() ? "" : ",") + mtlPath.string();
+        files.mtlText += text + "\n";
+        files.mtlName += (files.mtlName.empty() ? "" : ",") + mtlPath.string();
     }
-    return buildMesh(objText, path.string(), mtlText, mtlNames.empty() ? path.string() : mtlNames,
-                     report);
+    if (files.mtlName.empty()) files.mtlName = files.objName;
+    return files;
+}
+
+MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
+    const ObjFiles files = readObjFiles(path);
+    return buildMesh(files.objText, files.objName, files.mtlText, files.mtlName, report);
 }
 
 }  // namespace strata

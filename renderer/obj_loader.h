@@ -14,6 +14,19 @@ struct ObjLoadReport {
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
 };
 
+// The text of an OBJ and of the MTL files its `mtllib` lines name (joined), with the names used in
+// messages: read once (e.g. on MPI rank 0) and parsed anywhere with parseObj.
+struct ObjFiles {
+    std::string objText;
+    std::string objName;
+    std::string mtlText;
+    std::string mtlName;
+};
+
+// Reads `path` and its MTL files (relative to its folder), checking each file line by line.
+// Throws strata::Error naming the file and line on malformed input or a missing file.
+ObjFiles readObjFiles(const std::filesystem::path& path);
+
 // Loads `path` and the MTL files its `mtllib` lines name (relative to its folder). Throws
 // strata::Error naming the file and line on malformed input, a missing file or material.
 MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report = nullptr);

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "text_file.h"
 
 namespace strata {
 namespace {
@@ -22,30 +23,43 @@ SceneSettings framingSettings(const Scene& scene) {
 
 }  // namespace
 
-LoadedScene loadScene(const std::filesystem::path& objPath,
-                      const std::optional<std::filesystem::path>& cameraPath) {
+SceneFiles readSceneFiles(const std::filesystem::path& objPath,
+                          const std::optional<std::filesystem::path>& cameraPath) {
     if (!std::filesystem::is_regular_file(objPath)) {
         throw Error(objPath.string() + ": no such scene file");
     }
-    ObjLoadReport report;
-    MeshData mesh = loadObjFile(objPath, &report);
-    if (mesh.triangles.empty()) throw Error(objPath.string() + ": the scene has no usable triangles");
-
-    std::filesystem::path usedCamera;
+    SceneFiles files{readObjFiles(objPath), "", objPath, {}};
     if (cameraPath) {
-        usedCamera = *cameraPath;
+        files.cameraPath = *cameraPath;
     } else if (auto sidecar = std::filesystem::path(objPath).replace_extension(".json");
                std::filesystem::is_regular_file(sidecar)) {
-        usedCamera = sidecar;
+        files.cameraPath = sidecar;
+    }
+    if (!files.cameraPath.empty()) files.cameraText = readTextFile(files.cameraPath, "camera file");
+    return files;
+}
+
+LoadedScene parseScene(const SceneFiles& files) {
+    ObjLoadReport report;
+    MeshData mesh = parseObj(files.obj.objText, files.obj.objName, files.obj.mtlText,
+                             files.obj.mtlName, &report);
+    if (mesh.triangles.empty()) {
+        throw Error(files.obj.objName + ": the scene has no usable triangles");
     }
     std::optional<SceneSettings> settings;
-    if (!usedCamera.empty()) {
-        settings = loadSceneSettings(usedCamera);
+    if (!files.cameraPath.empty()) {
+        settings = parseSceneSettings(files.cameraText, files.cameraPath.string());
         mesh.pointLights = settings->pointLights;
     }
     Scene scene(std::move(mesh));
     if (!settings) settings = framingSettings(scene);
-    return LoadedScene{std::move(scene), std::move(*settings), report, objPath, usedCamera};
+    return LoadedScene{std::move(scene), std::move(*settings), report, files.objPath,
+                       files.cameraPath};
+}
+
+LoadedScene loadScene(const std::filesystem::path& objPath,
+                      const std::optional<std::filesystem::path>& cameraPath) {
+    return parseScene(readSceneFiles(objPath, cameraPath));
 }
 
 std::string describeScene(const LoadedScene& loaded) {

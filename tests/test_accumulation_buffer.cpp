@@ -4,6 +4,10 @@
 #include <limits>
 
 #include "accumulation_buffer.h"
+#include "pass_partition.h"
+#include "progressive_renderer.h"
+#include "scene_loader.h"
+#include "test_support.h"
 
 using namespace strata;
 
@@ -41,4 +45,68 @@ TEST_CASE("accumulation: non-finite samples are dropped and counted, never added
     buffer.clear();
     CHECK(buffer.droppedSamples() == 0);
     CHECK(buffer.sampleCount(0) == 0);
+}
+
+// What the MPI reduction does (app/render_job.cpp), in one process: each "rank" renders its
+// passes into its own buffer and the buffers are added element-wise; the result must match one
+// buffer that saw every pass, counts exactly and doubles within the summation-order bound
+// 2*gamma_{n-1}, gamma_k = k*u/(1 - k*u), u = 2^-53 (Higham §4.2; radiance is non-negative).
+TEST_CASE("accumulation buffer: buffers of disjoint passes add up to the single-process buffer") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const Camera camera(loaded.settings.pose, 20, 16);
+    RenderSettings settings;
+    settings.seed = 7;
+    settings.threads = 2;
+    constexpr uint32_t kPasses = 5;
+    constexpr int kRanks = 3;  // 2 + 2 + 1 passes
+
+    AccumulationBuffer single(camera.width(), camera.height());
+    ProgressiveRenderer renderer(loaded.scene, camera, settings);
+    for (uint32_t pass = 0; pass < kPasses; ++pass) renderer.renderPass(single, pass);
+
+    AccumulationBuffer combined(camera.width(), camera.height());
+    for (int rank = 0; rank < kRanks; ++rank) {
+        AccumulationBuffer part(camera.width(), camera.height());
+        const PassRange range = passesOfRank(kPasses, rank, kRanks);
+        for (uint32_t pass = range.begin; pass < range.end; ++pass) renderer.renderPass(part, pass);
+        const auto into = combined.realArrays();
+        const auto from = part.realArrays();
+        for (size_t a = 0; a < into.size(); ++a) {
+            for (size_t i = 0; i < into[a].size(); ++i) into[a][i] += from[a][i];
+        }
+        const auto countsInto = combined.countArrays();
+        const auto countsFrom = part.countArrays();
+        for (size_t a = 0; a < countsInto.size(); ++a) {
+            for (size_t i = 0; i < countsInto[a].size(); ++i) countsInto[a][i] += countsFrom[a][i];
+        }
+    }
+
+    const auto singleCounts = single.countArrays();
+    const auto combinedCounts = combined.countArrays();
+    for (size_t a = 0; a < singleCounts.size(); ++a) {
+        for (size_t i = 0; i < singleCounts[a].size(); ++i) {
+            REQUIRE(combinedCounts[a][i] == singleCounts[a][i]);
+        }
+    }
+    const double n = kPasses * kPathsPerPass;
+    const double u = std::numeric_limits<double>::epsilon() / 2.0;
+    const double bound = 2.0 * (n - 1.0) * u / (1.0 - (n - 1.0) * u);
+    const auto singleSums = single.realArrays();
+    const auto combinedSums = combined.realArrays();
+    double worst = 0.0;
+    for (size_t a = 0; a < singleSums.size(); ++a) {
+        for (size_t i = 0; i < singleSums[a].size(); ++i) {
+            const double x = singleSums[a][i];
+            const double y = combinedSums[a][i];
+            REQUIRE(x >= 0.0);  // the bound's premise: sums of non-negative values
+            if (x != y) worst = std::max(worst, std::abs(x - y) / x);
+        }
+    }
+    MESSAGE("largest relative difference " << worst << ", bound " << bound);
+    CHECK(worst <= bound);
+    for (size_t pixel = 0; pixel < single.pixelCount(); ++pixel) {
+        CHECK(combined.passStandardError(pixel) ==
+              doctest::Approx(single.passStandardError(pixel)).epsilon(1e-9));
+    }
+    CHECK(combined.imageMean().y > 0.0);  // the scene is lit: the comparison is not of zeros
 }

@@ -63,3 +63,22 @@ TEST_CASE("camera: JSON sidecar is read, and bad files name the file and the pro
               .find("look_at must differ") != std::string::npos);
     CHECK(messageOf(dir / "absent.json").find("cannot open") != std::string::npos);
 }
+
+TEST_CASE("camera: the JSON text parses from memory as from its file, errors name the given name") {
+    const std::string text =
+        R"({"position":[0,1,2],"look_at":[0,1,0],"up":[0,1,0],"fov_y":30,"width":8})";
+    const auto dir = test::scratchDir("camera-memory");
+    std::ofstream(dir / "c.json") << text;
+    const SceneSettings fromFile = loadSceneSettings(dir / "c.json");
+    const SceneSettings fromMemory = parseSceneSettings(text, "broadcast.json");
+    CHECK(fromMemory.width == fromFile.width);
+    CHECK(fromMemory.pose.position == fromFile.pose.position);
+    CHECK(fromMemory.pose.fovYDegrees == fromFile.pose.fovYDegrees);
+    try {
+        parseSceneSettings(R"({"position":[0,0,0]})", "broadcast.json");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("broadcast.json: missing key \"look_at\"") !=
+              std::string::npos);
+    }
+}

@@ -20,12 +20,12 @@ std::filesystem::path scratchDir(const std::string& name) {
     return dir;
 }
 
-CommandResult runStrata(const std::string& arguments) {
+CommandResult runCommand(const std::string& commandLine) {
     const auto dir = scratchDir("run");
     const auto outFile = dir / "stdout";
     const auto errFile = dir / "stderr";
-    const std::string command = std::string(STRATA_BINARY) + " " + arguments + " >" +
-                                outFile.string() + " 2>" + errFile.string() + " </dev/null";
+    const std::string command = "{ " + commandLine + "; } >" + outFile.string() + " 2>" +
+                                errFile.string() + " </dev/null";
     const int status = std::system(command.c_str());
     auto slurp = [](const std::filesystem::path& p) {
         std::ifstream in(p);
@@ -37,6 +37,10 @@ CommandResult runStrata(const std::string& arguments) {
                          slurp(outFile), slurp(errFile)};
     std::filesystem::remove_all(dir);
     return result;
+}
+
+CommandResult runStrata(const std::string& arguments) {
+    return runCommand(std::string(STRATA_BINARY) + " " + arguments);
 }
 
 MeanEstimate estimateMean(const std::vector<double>& values) {

@@ -21,6 +21,8 @@ struct CommandResult {
     std::string out;  // stdout
     std::string err;  // stderr
 };
+// Runs a shell command line, capturing its output.
+CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);
 

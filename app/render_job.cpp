@@ -1,0 +1,163 @@
+#include "render_job.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <span>
+
+#include "error.h"
+
+#if STRATA_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace strata {
+
+#if STRATA_WITH_MPI
+namespace {
+
+// Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE; PMIx and PMI launchers (srun) set PMIX_RANK or
+// PMI_RANK. Started any other way the program is one process and never initialises MPI, so a
+// plain `strata render` is the same program as in a build without MPI.
+bool launchedByMpi() {
+    return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") ||
+           std::getenv("PMI_RANK");
+}
+
+// MPI counts are ints; larger arrays go in pieces.
+constexpr size_t kMaxChunk = size_t{1} << 30;
+
+template <typename T, typename Call>
+void forChunks(std::span<T> data, Call call) {
+    for (size_t offset = 0; offset < data.size(); offset += kMaxChunk) {
+        call(data.data() + offset, static_cast<int>(std::min(kMaxChunk, data.size() - offset)));
+    }
+}
+
+void broadcast(std::string& text) {
+    uint64_t size = text.size();
+    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    text.resize(size);
+    forChunks(std::span<char>(text), [](char* data, int count) {
+        MPI_Bcast(data, count, MPI_CHAR, 0, MPI_COMM_WORLD);
+    });
+}
+
+void broadcast(std::filesystem::path& path) {
+    std::string text = path.string();
+    broadcast(text);
+    path = text;
+}
+
+// Adds every rank's `data` into rank 0's, element-wise.
+template <typename T>
+void reduceToRoot(std::span<T> data, MPI_Datatype type, bool root) {
+    forChunks(data, [&](T* chunk, int count) {
+        MPI_Reduce(root ? MPI_IN_PLACE : chunk, chunk, count, type, MPI_SUM, 0, MPI_COMM_WORLD);
+    });
+}
+
+std::string messageOf(std::exception_ptr failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown failure";
+    }
+}
+
+}  // namespace
+#endif
+
+RenderJob::RenderJob() {
+#if STRATA_WITH_MPI
+    if (!launchedByMpi()) return;
+    // Only the main thread calls MPI; the TBB workers never do.
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    mpi_ = true;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+#endif
+}
+
+RenderJob::~RenderJob() {
+#if STRATA_WITH_MPI
+    if (mpi_) MPI_Finalize();
+#endif
+}
+
+void RenderJob::settle(std::exception_ptr failure) {
+    if (!mpi_) {
+        if (failure) std::rethrow_exception(failure);
+        return;
+    }
+#if STRATA_WITH_MPI
+    int firstFailed = failure ? rank_ : ranks_;
+    MPI_Allreduce(MPI_IN_PLACE, &firstFailed, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (firstFailed == ranks_) return;
+    constexpr int kMessageTag = 1;
+    if (firstFailed == rank_ && !isRoot()) {
+        const std::string message = messageOf(failure);
+        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kMessageTag,
+                 MPI_COMM_WORLD);
+    }
+    if (!isRoot()) throw ErrorReportedByRankZero{};
+    if (firstFailed == 0) std::rethrow_exception(failure);
+    MPI_Status status;
+    MPI_Probe(firstFailed, kMessageTag, MPI_COMM_WORLD, &status);
+    int size = 0;
+    MPI_Get_count(&status, MPI_CHAR, &size);
+    std::string message(static_cast<size_t>(size), '\0');
+    MPI_Recv(message.data(), size, MPI_CHAR, firstFailed, kMessageTag, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    throw Error("rank " + std::to_string(firstFailed) + " of " + std::to_string(ranks_) + ": " +
+                message);
+#endif
+}
+
+SceneFiles RenderJob::shareSceneFiles(const std::function<SceneFiles()>& read) {
+    if (!mpi_) return read();
+    SceneFiles files;
+#if STRATA_WITH_MPI
+    collectively([&] {
+        if (isRoot()) files = read();
+    });
+    for (std::string* text : {&files.obj.objText, &files.obj.objName, &files.obj.mtlText,
+                              &files.obj.mtlName, &files.cameraText}) {
+        broadcast(*text);
+    }
+    broadcast(files.objPath);
+    broadcast(files.cameraPath);
+#endif
+    return files;
+}
+
+// Bit-identity with the single-process image is not arranged, and cannot be without shipping
+// every pass's values: one process adds a pixel's samples left to right over all passes, while
+// here each rank sums its own block of passes and MPI_SUM then adds the ranks' sums in an order
+// the MPI standard leaves to the implementation (a tree, for Open MPI's larger jobs). The counts
+// are integers and add exactly. Each double is a sum of n = spp values (fewer for the pass
+// statistics); any two orders of summing n non-negative values lie within gamma_{n-1} =
+// (n-1)u/(1-(n-1)u), u = 2^-53, of the exact sum relative to it (Higham, Accuracy and Stability
+// of Numerical Algorithms, 2nd ed., §4.2), hence within 2*gamma_{n-1} of each other: 5.3e-14 at
+// 240 spp. Strata's radiance is non-negative (Kd, Ke >= 0 are enforced; only a point light given
+// a negative intensity would break this, and make the bound relative to the sum of magnitudes
+// instead), so after the division by n and the rounding to float an output pixel channel equals
+// the single-process one or is the adjacent float (2^-23 relative), when the double lies next to
+// a rounding boundary. tests/test_mpi_render.cpp checks that bound against the single-process
+// render, tests/test_accumulation_buffer.cpp the double-level bound for combined buffers.
+void RenderJob::reduce([[maybe_unused]] AccumulationBuffer& buffer,
+                       [[maybe_unused]] RenderCounters& counters) {
+    if (!mpi_) return;
+#if STRATA_WITH_MPI
+    for (const auto array : buffer.realArrays()) reduceToRoot(array, MPI_DOUBLE, isRoot());
+    for (const auto array : buffer.countArrays()) reduceToRoot(array, MPI_UINT32_T, isRoot());
+    uint64_t totals[2] = {counters.paths, counters.rays};
+    reduceToRoot(std::span<uint64_t>(totals), MPI_UINT64_T, isRoot());
+    counters = {totals[0], totals[1]};
+#endif
+}
+
+}  // namespace strata

@@ -1,0 +1,82 @@
+#pragma once
+// The processes of one `strata render`: the ranks of an MPI job when the program was started by an
+// MPI launcher (mpirun, srun) and built with STRATA_WITH_MPI, else this one process as a job of one
+// rank, for which every call below is the plain single-process behaviour. All the MPI glue lives in
+// render_job.cpp, so the render command is written once for both.
+#include <exception>
+#include <functional>
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "accumulation_buffer.h"
+#include "progressive_renderer.h"
+#include "scene_loader.h"
+
+namespace strata {
+
+// Thrown on the ranks other than 0 when a step failed: rank 0 prints the one message for the job,
+// the others only exit non-zero.
+struct ErrorReportedByRankZero {};
+
+class RenderJob {
+public:
+    RenderJob();   // MPI_Init_thread when launched by an MPI launcher
+    ~RenderJob();  // MPI_Finalize
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    int rank() const { return rank_; }
+    int ranks() const { return ranks_; }
+    bool isRoot() const { return rank_ == 0; }
+    // Started by an MPI launcher (even with one rank).
+    bool underMpi() const { return mpi_; }
+
+    // Runs `step` on every rank, then all ranks compare notes: when it threw anywhere, every rank
+    // throws (rank 0 the failure of the lowest failing rank, named "rank N" when not its own; the
+    // others ErrorReportedByRankZero), so no rank is left waiting in a later collective call and
+    // the job ends before any output is written. One rank: runs `step`, exceptions pass through.
+    template <typename Step>
+    auto collectively(Step&& step) -> std::invoke_result_t<Step&>;
+
+    // Rank 0 reads the scene's files with `read`; every rank gets their bytes (MPI_Bcast) and so
+    // parses the very same scene, even when the hosts' file systems differ.
+    SceneFiles shareSceneFiles(const std::function<SceneFiles()>& read);
+
+    // Adds every rank's buffer and counters into rank 0's (MPI_Reduce); the other ranks' are then
+    // meaningless. Ranks must have rendered disjoint passes (passesOfRank).
+    void reduce(AccumulationBuffer& buffer, RenderCounters& counters);
+
+private:
+    // The collective half of `collectively`: returns when no rank failed, else throws as above.
+    void settle(std::exception_ptr failure);
+
+    int rank_ = 0;
+    int ranks_ = 1;
+    bool mpi_ = false;
+};
+
+template <typename Step>
+auto RenderJob::collectively(Step&& step) -> std::invoke_result_t<Step&> {
+    using Result = std::invoke_result_t<Step&>;
+    std::exception_ptr failure;
+    if constexpr (std::is_void_v<Result>) {
+        try {
+            step();
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        settle(failure);
+    } else {
+        std::optional<Result> result;
+        try {
+            result.emplace(step());
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        settle(failure);
+        return std::move(*result);
+    }
+}
+
+}  // namespace strata
