@@ -43,6 +43,8 @@ public:
     // normals. Empty when the sampled direction falls below the surface (the sample counts, with
     // weight 0).
     std::optional<BsdfSample> sample(const glm::vec3& wo, glm::vec2 u, float lobeChoice) const;
+    // The probability that sample() takes the specular lobe at wo: lobeChoice below it does.
+    float specularProbability(const glm::vec3& wo) const;
     // Density of sample()'s direction wi, the mixture of both lobes' densities.
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
 
@@ -52,7 +54,6 @@ public:
 
 private:
     glm::vec3 specularAlbedo(float mu) const;  // E_F(mu), per channel
-    float specularProbability(const glm::vec3& wo) const;
 
     glm::vec3 diffuse_;
     glm::vec3 specular_;  // F0 of Schlick's Fresnel

@@ -57,8 +57,9 @@ private:
 // (material.h). For Schlick's F the albedo is linear in F0:
 //   E_F(mu) = F0 E1(mu) + (1 - F0) E5(mu),
 // E1 = integral of f_r(F = 1) cos d(wi)  and  E5 = the same with F = (1 - wo.h)^5, mu = cos(theta_o).
-// Both are tabulated over mu once per material by quadrature over the visible-normal sampler
-// (whose weight f cos / pdf = G2 / G1(wo) is smooth), and interpolated linearly.
+// Both are tabulated once per material by quadrature over the visible-normal sampler (whose
+// weight f cos / pdf = G2 / G1(wo) is smooth) at mu = (i / 127)^2, dense toward grazing where
+// they change fastest, and interpolated linearly in mu.
 class GgxAlbedoTable {
 public:
     explicit GgxAlbedoTable(const GgxDistribution& distribution);
@@ -70,7 +71,8 @@ public:
     glm::vec2 averageAlbedo() const { return average_; }
 
 private:
-    static constexpr int kEntries = 64;
+    static constexpr int kEntries = 128;
+    static float entryCosine(int entry);  // mu of table entry `entry`
     std::array<glm::vec2, kEntries> table_{};
     glm::vec2 average_{0.0f};
 };
