@@ -21,36 +21,42 @@ constexpr double kAsinThird = 0.33983690945412194;     // asin(1/3)
 int strataClass(int id) { return (id % 6) / 2; }  // 0 pole, 1 middle, 2 equator
 
 // The equator class's azimuth CDF (projected area swept up to phi, canonical triangle
-// {x >= y >= z}): F(phi) = (phi - atan(sqrt2 tan phi) / sqrt2) / 2. The direct formula cancels
-// for small phi, where the series phi^3/6 - 2 phi^5/15 + 11 phi^7/90 - 347 phi^9/2835 is used.
-double equatorCdf(double phi) {
+// {x >= y >= z}): F(phi) = (phi - atan(sqrt2 tan phi) / sqrt2) / 2, given sin and cos of phi.
+// The direct formula cancels for small phi, where the series
+// phi^3/6 - 2 phi^5/15 + 11 phi^7/90 - 347 phi^9/2835 is used.
+double equatorCdf(double phi, double sinPhi, double cosPhi) {
     if (phi < 0.02) {
         const double p2 = phi * phi;
         return phi * p2 * (1.0 / 6.0 + p2 * (-2.0 / 15.0 + p2 * (11.0 / 90.0 - p2 * (347.0 / 2835.0))));
     }
-    return 0.5 * (phi - std::atan(kSqrt2D * std::tan(phi)) / kSqrt2D);
+    return 0.5 * (phi - std::atan2(kSqrt2D * sinPhi, cosPhi) / kSqrt2D);
 }
 
-// Solves F(phi) = target on [0, pi/4] by Newton's method on F^(1/3), which is nearly linear
-// (F ~ phi^3 / 6 near 0), started at (6 target)^(1/3) (notes section 3). A bracket keeps every
-// iterate inside the interval where F brackets the target, so the iteration cannot escape.
+// Solves F(phi) = target on [0, pi/4] by Newton's method, F'(phi) = sin^2 / (2 (1 + sin^2)).
+// The start inverts F's first two series terms (notes section 3 iterate on F^(1/3), which is
+// nearly linear; from this start plain Newton on F converges in 2 to 4 steps without a cube root
+// per step). A bracket keeps every iterate inside the interval where F brackets the target, so
+// the iteration cannot escape.
 double invertEquatorCdf(double target) {
     if (target <= 0.0) return 0.0;
-    const double root = std::cbrt(target);
     double lo = 0.0;
     double hi = kQuarterPi;
-    double phi = std::min(std::cbrt(6.0 * target), kQuarterPi);
-    for (int iteration = 0; iteration < 40; ++iteration) {
-        const double f = equatorCdf(phi);
+    // phi^3/6 (1 - 4 phi^2 / 5) = target, inverted to first order: within 1% everywhere.
+    const double c = std::cbrt(6.0 * target);
+    double phi = std::min(c * (1.0 + 4.0 / 15.0 * c * c), kQuarterPi);
+    for (int iteration = 0; iteration < 60; ++iteration) {
+        const double sinPhi = std::sin(phi);
+        const double cosPhi = std::cos(phi);
+        const double f = equatorCdf(phi, sinPhi, cosPhi);
         if (f < target) lo = phi; else hi = phi;
-        const double s2 = std::sin(phi) * std::sin(phi);
-        const double derivative = 0.5 * s2 / (1.0 + s2);  // F'(phi)
-        const double cbrtF = std::cbrt(f);
-        // d(F^(1/3))/dphi = F' / (3 F^(2/3)).
-        double next = phi - (cbrtF - root) * 3.0 * cbrtF * cbrtF / derivative;
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        if (std::abs(next - phi) <= 1e-15 * kQuarterPi) return next;
-        phi = next;
+        const double s2 = sinPhi * sinPhi;
+        const double step = (f - target) * 2.0 * (1.0 + s2) / s2;
+        // A step below 1e-7 relative leaves an error of order its square, ~1e-14, after it is
+        // taken (quadratic convergence). Tested before the bracket: a step that rounds to
+        // nothing would otherwise look like an escape and trigger a bisection.
+        if (std::abs(step) <= 1e-7 * phi) return phi - step;
+        phi -= step;
+        if (!(phi > lo && phi < hi)) phi = 0.5 * (lo + hi);
     }
     return phi;
 }
