@@ -8,6 +8,7 @@
 #include "error.h"
 #include "microfacet.h"
 #include "obj_loader.h"
+#include "test_support.h"
 
 using namespace strata;
 
@@ -39,4 +40,18 @@ TEST_CASE("material: Ks above 1 or a negative Pr is refused naming the file") {
             CHECK(std::string(e.what()).find("m.mtl") != std::string::npos);
         }
     }
+}
+
+TEST_CASE("material: the bundled glossy scene has its Cook-Torrance materials") {
+    const MeshData mesh = loadObjFile(test::sourceDir() / "assets/glossy/glossy.obj");
+    int glossy = 0;
+    for (const Material& m : mesh.materials) {
+        if (m.specular.x > 0.0f) ++glossy;
+        if (m.name == "gold") {
+            CHECK(m.specular.y == doctest::Approx(0.71f));
+            CHECK(m.roughness == doctest::Approx(0.3f));
+            CHECK(m.diffuse.x == 0.0f);
+        }
+    }
+    CHECK(glossy == 4);  // floor, gold, plastic, copper
 }
