@@ -173,3 +173,13 @@ TEST_CASE("direction sampler: cosine-weighted hemisphere passes a chi-square tes
     INFO("chi2 = " << chi2);
     CHECK(chi2 < 360.0);
 }
+
+TEST_CASE("direction sampler: depth 10000 with NEE runs as a loop and converges to Le / (1 - rho)") {
+    const Scene scene(test::furnaceMesh(lambertian(0.5f, 1.0f)));
+    for (bool nee : {false, true}) {
+        const PathIntegrator integrator(scene, {10000, SamplerKind::Cosine, nee});
+        const auto estimates = test::pixelEstimates(integrator, test::furnaceRay(), 24, 1, 2);
+        checkUnbiased(estimates, test::furnaceRadiance(0.5, 1.0, 10000),
+                      nee ? "depth 10000 --nee" : "depth 10000");
+    }
+}
