@@ -22,18 +22,12 @@ struct SamplesCommand {
         if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
         if (passes < 1 || passes > 1000000) throw Error("--passes: must be in 1..1000000");
         if (depth < 1 || depth > 64) throw Error("--depth: must be in 1..64 (bounces to list)");
-        // The bsdf sampler needs a material: a white Lambertian one seen head-on, whose
-        // importance sampling is the cosine-weighted hemisphere.
-        Material white;
-        white.diffuse = glm::vec3(1.0f);
-        const LayeredBsdf bsdf(white);
         std::printf("pass,path,bounce,stratum,x,y,z\n");
         for (uint32_t pass = 0; pass < passes; ++pass) {
             for (int path = 0; path < kPathsPerPass; ++path) {
                 const PathSamples samples(seed, pixel, pass, path);
                 for (int bounce = 0; bounce < depth; ++bounce) {
-                    const SampledDirection d =
-                        sampleDirection(*kind, samples, bounce, bsdf, glm::vec3(0.0f, 0.0f, 1.0f));
+                    const SampledDirection d = sampleDirection(*kind, samples, bounce);
                     std::printf("%u,%d,%d,%d,%.9g,%.9g,%.9g\n", pass, path, bounce, d.stratum,
                                 d.local.x, d.local.y, d.local.z);
                 }

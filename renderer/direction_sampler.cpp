@@ -87,6 +87,12 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
     return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
 }
 
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce) {
+    Material white;
+    white.diffuse = glm::vec3(1.0f);
+    return sampleDirection(kind, samples, bounce, LayeredBsdf(white), glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
 float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& wo,
                    const glm::vec3& wi) {
     if (wi.z <= 0.0f) return 0.0f;

@@ -48,6 +48,10 @@ struct SampledDirection {
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
                                  const LayeredBsdf& bsdf, const glm::vec3& wo);
 
+// The direction alone, as sampled at a white Lambertian surface seen head-on (where the bsdf
+// sampler is the cosine sampler): for `strata samples` and tests of the partition.
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce);
+
 // The marginal density with which sampleDirection would produce the local direction `wi`, the
 // other technique's density in multiple importance sampling with light sampling.
 float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& wo,
