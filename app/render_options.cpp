@@ -21,7 +21,9 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
         ->capture_default_str();
     command.add_option("--seed", seed, "Random seed")->capture_default_str();
     command.add_option("--threads", threads, "Render threads (0: all cores)")->capture_default_str();
-    command.add_flag("--nee", nee, "Next-event estimation (point lights are reached only this way)");
+    command.add_flag("--nee", nee,
+                     "Next-event estimation: sample emitting triangles (MIS with the sampler) "
+                     "and point lights (reached only this way)");
 }
 
 RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {

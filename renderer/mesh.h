@@ -12,6 +12,8 @@ struct Material {
     std::string name;
     glm::vec3 diffuse{0.0f};   // Kd: Lambertian albedo
     glm::vec3 emission{0.0f};  // Ke: radiance emitted on the counter-clockwise (front) side
+    glm::vec3 specular{0.0f};  // Ks: Fresnel reflectance at normal incidence of the GGX layer
+    float roughness = 1.0f;    // Pr (or converted from Ns): GGX alpha = Pr^2 (material.h)
 };
 
 struct PointLight {

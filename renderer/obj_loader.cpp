@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <string_view>
 #include <vector>
 #include <glm/common.hpp>
@@ -9,6 +10,7 @@
 #include <tiny_obj_loader.h>
 
 #include "error.h"
+#include "microfacet.h"
 #include "text_file.h"
 
 namespace strata {
@@ -130,15 +132,21 @@ std::vector<std::string> validateObj(const std::string& text, const std::string&
     return libraries;
 }
 
-void validateMtl(const std::string& text, const std::string& name) {
+// Returns the names of the materials that give a roughness Pr (the others take it from Ns:
+// tinyobjloader reads an absent Pr as 0, which cannot be told from an explicit 0).
+std::set<std::string> validateMtl(const std::string& text, const std::string& name) {
     bool inMaterial = false;
+    std::string material;
+    std::set<std::string> withRoughness;
     forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "newmtl") {
             if (words.size() != 2) failAt(name, line, "newmtl needs one material name");
             inMaterial = true;
+            material = std::string(words[1]);
             return;
         }
+        if (key == "Pr" && inMaterial) withRoughness.insert(material);
         const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Ka" ||
                             key == "Tf" || key == "Kt";
         const bool scalar = key == "Ns" || key == "Ni" || key == "d" || key == "Tr" ||
@@ -149,6 +157,7 @@ void validateMtl(const std::string& text, const std::string& name) {
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
     });
+    return withRoughness;
 }
 
 bool isFinite(const glm::vec3& v) {
@@ -157,7 +166,8 @@ bool isFinite(const glm::vec3& v) {
 
 // Builds the mesh from text that validateObj and validateMtl have accepted.
 MeshData buildMesh(const std::string& objText, const std::string& objName,
-                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
+                   const std::string& mtlText, const std::string& mtlName,
+                   const std::set<std::string>& withRoughness, ObjLoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
@@ -185,13 +195,25 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
         material.name = m.name;
         material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
         material.emission = {m.emission[0], m.emission[1], m.emission[2]};
+        material.specular = {m.specular[0], m.specular[1], m.specular[2]};
+        material.roughness = withRoughness.count(m.name) ? m.roughness
+                                                         : roughnessFromShininess(m.shininess);
         if (!isFinite(material.diffuse) || !isFinite(material.emission) ||
+            !isFinite(material.specular) || !std::isfinite(material.roughness) ||
             glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
-            glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f) {
-            throw Error(mtlName + ": material '" + m.name + "' has a negative or non-finite Kd or Ke");
+            glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f ||
+            glm::min(glm::min(material.specular.x, material.specular.y), material.specular.z) < 0.0f) {
+            throw Error(mtlName + ": material '" + m.name +
+                        "' has a negative or non-finite Kd, Ke, Ks or Pr");
         }
         if (glm::max(glm::max(material.diffuse.x, material.diffuse.y), material.diffuse.z) > 1.0f) {
             throw Error(mtlName + ": material '" + m.name + "' has Kd above 1 (creates energy)");
+        }
+        if (glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 1.0f) {
+            throw Error(mtlName + ": material '" + m.name + "' has Ks above 1 (creates energy)");
+        }
+        if (material.roughness < 0.0f || material.roughness > 1.0f) {
+            throw Error(mtlName + ": material '" + m.name + "' has Pr outside 0..1");
         }
         mesh.materials.push_back(material);
     }
@@ -239,8 +261,8 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
 MeshData parseObj(const std::string& objText, const std::string& objName,
                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
     validateObj(objText, objName);
-    validateMtl(mtlText, mtlName);
-    return buildMesh(objText, objName, mtlText, mtlName, report);
+    const auto withRoughness = validateMtl(mtlText, mtlName);
+    return buildMesh(objText, objName, mtlText, mtlName, withRoughness, report);
 }
 
 ObjFiles readObjFiles(const std::filesystem::path& path) {
@@ -258,8 +280,9 @@ ObjFiles readObjFiles(const std::filesystem::path& path) {
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
+    // The same path as a scene broadcast to MPI ranks: read the texts, then parse from memory.
     const ObjFiles files = readObjFiles(path);
-    return buildMesh(files.objText, files.objName, files.mtlText, files.mtlName, report);
+    return parseObj(files.objText, files.objName, files.mtlText, files.mtlName, report);
 }
 
 }  // namespace strata

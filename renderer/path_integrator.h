@@ -1,16 +1,26 @@
 #pragma once
 // The path tracer: the Neumann series of the rendering equation truncated at recursion depth K
-// (paper, section 4). The camera ray finds x_1; bounce j samples a direction on the hemisphere
-// around x_j (sampler: direction_sampler.h), traces it with Embree and adds the emitted radiance
+// (paper, section 4). The camera ray finds x_1; bounce j samples a direction around x_j (sampler:
+// direction_sampler.h; material: material.h), traces it with Embree and adds the emitted radiance
 // found at x_{j+1} times the path weight, the product of f_r cos(theta) / pdf. K counts bounces:
 // K = 0 shows only directly visible emission, and a furnace of albedo rho and emission Le gives
 // Le (1 - rho^(K+1)) / (1 - rho).
+//
+// With next-event estimation each scattering vertex x_j (j < K) also connects to one point on an
+// emitting triangle (emitter_sampler.h) and to every point light. Emission is then reached two
+// ways, by the light sample and by the next bounce's direction; the two are combined by multiple
+// importance sampling with the power heuristic (Veach & Guibas 1995), whose weights sum to 1 for
+// every direction, so the estimate stays unbiased for every sampler.
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 #include <glm/vec3.hpp>
 
 #include "direction_sampler.h"
+#include "emitter_sampler.h"
+#include "frame.h"
+#include "material.h"
 #include "path_samples.h"
 #include "ray.h"
 #include "scene.h"
@@ -20,8 +30,9 @@ namespace strata {
 struct PathIntegratorSettings {
     int depth = 5;  // K, number of bounces
     SamplerKind sampler = SamplerKind::Strata24;
-    // Next-event estimation: at each scattering vertex, connect to every point light with a
-    // shadow ray. Point lights are delta lights, reachable no other way.
+    // Next-event estimation: at each scattering vertex, a shadow ray to a point sampled on the
+    // emitting triangles (combined with the bounce's own direction by MIS) and one to every point
+    // light (delta lights, reachable no other way).
     bool nextEventEstimation = false;
 };
 
@@ -31,8 +42,7 @@ std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSett
 
 class PathIntegrator {
 public:
-    PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
-        : scene_(scene), settings_(settings) {}
+    PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings);
 
     // Radiance arriving along -ray.direction at ray.origin. `rays` counts the rays traced.
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
@@ -40,12 +50,19 @@ public:
     const PathIntegratorSettings& settings() const { return settings_; }
 
 private:
-    // Radiance from the scene's point lights reflected at `surface` (normal facing the viewer),
-    // divided by f_r: sum of I cos / r^2 over the unoccluded lights.
-    glm::vec3 pointLightIrradiance(const SurfaceHit& surface, uint64_t& rays) const;
+    // The reflected radiance from one light sample on the emitting triangles, MIS-weighted
+    // against the direction sampler, at `surface` (normal facing the viewer) toward wo.
+    glm::vec3 emitterLight(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
+                           const LayeredBsdf& bsdf, const PathSamples& samples, int bounce,
+                           uint64_t& rays) const;
+    // The reflected radiance from the scene's point lights: f_r I cos / r^2 for each visible one.
+    glm::vec3 pointLightRadiance(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
+                                 const LayeredBsdf& bsdf, uint64_t& rays) const;
 
     const Scene& scene_;
     PathIntegratorSettings settings_;
+    std::vector<LayeredBsdf> bsdfs_;  // one per scene material
+    EmitterSampler emitters_;
 };
 
 }  // namespace strata

@@ -4,6 +4,7 @@
 // renders bit-identical for any thread count.
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace strata {
 
@@ -16,8 +17,17 @@ public:
     // The point in [0,1)^2 that the direction sampler maps onto the hemisphere (or onto a stratum)
     // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
     glm::vec2 bouncePoint(int bounce) const;
+    // The point in [0,1)^2 of the path's stratum at `bounce` from that stratum's own
+    // Owen-scrambled Sobol' stream (sobol.h): one stream per (pixel, bounce, stratum), indexed by
+    // the pass. Every pass uses each stratum once per bounce, so the first 2^m passes put a
+    // (0,m,2)-net in every stratum: each stratum is stratified ever more finely (strata24-qmc).
+    glm::vec2 stratumSequencePoint(int bounce) const;
     // The stratum this path takes at `bounce` (stratum_schedule.h).
     int stratum(int bounce) const;
+    // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`.
+    float lobeChoice(int bounce) const;
+    // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it.
+    glm::vec3 lightSample(int bounce) const;
 
     uint64_t pixelKey() const { return pixelKey_; }
     uint32_t pass() const { return pass_; }

@@ -8,8 +8,8 @@ namespace {
 
 constexpr float kSqrt2 = 1.41421356237309504880f;
 
-// Places sorted coordinates a >= b >= c of the canonical triangle {a >= b >= c >= 0} onto the axes
-// for ordering `order` (table in strata24.h) and applies the quadrant's signs.
+}  // namespace
+
 glm::vec3 placeInStratum(int id, float a, float b, float c) {
     glm::vec3 d;
     switch (id % 6) {
@@ -25,8 +25,6 @@ glm::vec3 placeInStratum(int id, float a, float b, float c) {
     if (quadrant == 2 || quadrant == 3) d.y = -d.y;
     return d;
 }
-
-}  // namespace
 
 glm::vec3 sampleStratum(int id, glm::vec2 u) {
     // Azimuth about the pi/4 vertex P: the marginal CDF G(phi) = phi - asin(sin(phi)/sqrt 2)

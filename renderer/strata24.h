@@ -29,6 +29,11 @@ inline constexpr float kStratumSolidAngle = kPi / 12.0f;
 // z >= 0 and lies in its stratum (ties on the boundary planes resolved in its favour).
 glm::vec3 sampleStratum(int id, glm::vec2 u);
 
+// Places sorted coordinates a >= b >= c >= 0 of the canonical triangle onto the axes of stratum
+// `id` (its ordering, then the quadrant's signs): the symmetry that maps the canonical triangle
+// onto every stratum, shared by the uniform and the cosine-weighted stratum samplers.
+glm::vec3 placeInStratum(int id, float a, float b, float c);
+
 // The stratum that contains a local direction with z >= 0 (boundary ties broken as documented in
 // the notes, section 2.2). classifyStratum(sampleStratum(id, u)) == id for every u.
 int classifyStratum(const glm::vec3& direction);

@@ -8,6 +8,10 @@ cornell/  The Cornell box from the published Cornell measurements (units: mm): t
           Camera: the published pinhole (35 mm focal length, 25 mm film => fov_y 39.3077 deg).
 furnace/  The camera inside a closed icosphere (subdivided icosahedron), every face Kd 0.5 and
           Ke 1 facing inward: the exact answer at depth K is (1 - 0.5^(K+1)) / 0.5.
+glossy/   Three Cook-Torrance spheres (gold metal, red plastic, rough copper) on a glossy dark
+          floor before a matte wall, under a tilted softbox and a warm strip light (units: m).
+          Ks is the Fresnel F0, Pr the roughness (GGX alpha = Pr^2). The spheres are flat-faceted
+          icospheres (the renderer uses geometric normals), fine enough for smooth highlights.
 Every polygon is written counter-clockwise as seen from the side it faces (its front).
 """
 import json
@@ -154,6 +158,56 @@ def furnace():
                 "fov_y": 90, "width": 64, "height": 64})
 
 
+def glossy():
+    lines = ["# Glossy studio: three Cook-Torrance spheres on a glossy floor (units: m).",
+             "# Counter-clockwise = front. Ks: Fresnel F0; Pr: roughness (GGX alpha = Pr^2).",
+             "mtllib glossy.mtl"]
+    count = 0
+
+    def polygons(name, material, polys):
+        nonlocal count
+        lines.extend([f"o {name}", f"usemtl {material}"])
+        for poly in polys:
+            lines.extend("v " + " ".join(f"{c:.6g}" for c in v) for v in poly)
+            lines.append("f " + " ".join(str(count + i + 1) for i in range(len(poly))))
+            count += len(poly)
+
+    polygons("floor", "floor", [facing([[-5, 0, -2], [5, 0, -2], [5, 0, 5], [-5, 0, 5]], [0, 1, 0])])
+    polygons("wall", "wall", [facing([[-5, 0, -2], [5, 0, -2], [5, 5, -2], [-5, 5, -2]], [0, 0, 1])])
+    # Softbox above and in front, tilted 30 degrees toward the spheres.
+    c, s30 = math.cos(math.radians(30)), math.sin(math.radians(30))
+    box = [[x, 3.2 + dz * s30, 2.0 + dz * c] for x, dz in [(-1.2, -0.5), (1.2, -0.5), (1.2, 0.5), (-1.2, 0.5)]]
+    polygons("softbox", "softbox", [facing(box, [0, -c, -s30])])
+    # A warm vertical strip at the back left, lighting the spheres' rims.
+    strip = [[-3.2, 0.2, -1.0], [-3.2, 0.2, -0.4], [-3.2, 2.4, -0.4], [-3.2, 2.4, -1.0]]
+    polygons("strip", "strip", [facing(strip, [1, 0, 0.3])])
+
+    vertices, faces = icosphere(4)
+    radius = 0.55
+    for name, x in [("gold", -1.3), ("plastic", 0.0), ("copper", 1.3)]:
+        lines.extend([f"o {name}", f"usemtl {name}"])
+        lines.extend("v " + " ".join(f"{c:.6g}" for c in [x + radius * v[0], radius + radius * v[1],
+                                                              radius * v[2]]) for v in vertices)
+        # The icosahedron's faces are counter-clockwise seen from outside: they face out.
+        lines.extend(f"f {count + a + 1} {count + b + 1} {count + c + 1}" for a, b, c in faces)
+        count += len(vertices)
+    with open("assets/glossy/glossy.obj", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    write_mtl("assets/glossy/glossy.mtl",
+              ["Cook-Torrance materials: Kd Lambertian base, Ks Schlick F0, Pr roughness; Ke radiance."],
+              [("floor", [("Kd", [0.16, 0.16, 0.18]), ("Ks", [0.04, 0.04, 0.04]), ("Pr", [0.3])]),
+               ("wall", [("Kd", [0.55, 0.55, 0.55])]),
+               ("gold", [("Kd", [0, 0, 0]), ("Ks", [1.0, 0.71, 0.29]), ("Pr", [0.3])]),
+               ("plastic", [("Kd", [0.6, 0.05, 0.04]), ("Ks", [0.04, 0.04, 0.04]), ("Pr", [0.2])]),
+               ("copper", [("Kd", [0, 0, 0]), ("Ks", [0.95, 0.64, 0.54]), ("Pr", [0.55])]),
+               ("softbox", [("Ke", [12, 12, 12])]),
+               ("strip", [("Ke", [10, 6, 3])])])
+    write_json("assets/glossy/glossy.json",
+               {"position": [0, 1.3, 4.6], "look_at": [0, 0.5, 0], "up": [0, 1, 0],
+                "fov_y": 32, "width": 480, "height": 270})
+
+
 if __name__ == "__main__":
     cornell()
     furnace()
+    glossy()

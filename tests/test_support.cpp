@@ -6,6 +6,10 @@
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <glm/geometric.hpp>
+
+#include "accumulation_buffer.h"
+#include "path_samples.h"
 
 namespace strata::test {
 
@@ -67,6 +71,58 @@ void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::
     mesh.triangles.push_back({base, base + 1, base + 2});
     mesh.triangles.push_back({base, base + 2, base + 3});
     mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {material, material});
+}
+
+MeshData furnaceMesh(const Material& material) {
+    MeshData mesh;
+    mesh.materials.push_back(material);
+    // Each face counter-clockwise as seen from inside the cube.
+    const float s = 1.0f;
+    addQuad(mesh, {-s, -s, -s}, {s, -s, -s}, {s, s, -s}, {-s, s, -s}, 0);  // z = -1, faces +z
+    addQuad(mesh, {-s, -s, s}, {-s, s, s}, {s, s, s}, {s, -s, s}, 0);      // z = +1, faces -z
+    addQuad(mesh, {-s, -s, -s}, {-s, s, -s}, {-s, s, s}, {-s, -s, s}, 0);  // x = -1, faces +x
+    addQuad(mesh, {s, -s, -s}, {s, -s, s}, {s, s, s}, {s, s, -s}, 0);      // x = +1, faces -x
+    addQuad(mesh, {-s, -s, -s}, {-s, -s, s}, {s, -s, s}, {s, -s, -s}, 0);  // y = -1, faces +y
+    addQuad(mesh, {-s, s, -s}, {s, s, -s}, {s, s, s}, {-s, s, s}, 0);      // y = +1, faces -y
+    return mesh;
+}
+
+Ray furnaceRay() { return Ray{{0.1f, -0.05f, 0.02f}, glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f))}; }
+
+double furnaceRadiance(double albedo, double emission, int depth) {
+    return emission * (1.0 - std::pow(albedo, depth + 1)) / (1.0 - albedo);
+}
+
+MeshData lambertSquareMesh(const Material& receiver) {
+    MeshData mesh;
+    Material emitter;
+    emitter.name = "square";
+    emitter.emission = glm::vec3(1.0f);
+    mesh.materials = {receiver, emitter};
+    addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);  // faces +z
+    // Counter-clockwise seen from below: its front faces the receiver.
+    addQuad(mesh, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1}, 1);
+    return mesh;
+}
+
+Ray rayToOrigin(const glm::vec3& from) { return Ray{from, glm::normalize(-from)}; }
+
+std::vector<double> pixelEstimates(const PathIntegrator& integrator, const Ray& ray, int pixels,
+                                   uint32_t passes, uint64_t seed) {
+    std::vector<double> estimates;
+    estimates.reserve(pixels);
+    for (int pixel = 0; pixel < pixels; ++pixel) {
+        double sum = 0.0;
+        uint64_t rays = 0;
+        for (uint32_t pass = 0; pass < passes; ++pass) {
+            for (int step = 0; step < 24; ++step) {
+                const PathSamples samples(seed, static_cast<uint64_t>(pixel), pass, step);
+                sum += luminance(glm::dvec3(integrator.radiance(ray, samples, rays)));
+            }
+        }
+        estimates.push_back(sum / (24.0 * passes));
+    }
+    return estimates;
 }
 
 }  // namespace strata::test

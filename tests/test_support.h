@@ -8,6 +8,8 @@
 #include <glm/vec3.hpp>
 
 #include "mesh.h"
+#include "path_integrator.h"
+#include "ray.h"
 
 namespace strata::test {
 
@@ -41,5 +43,27 @@ double chiSquareCritical(size_t degrees);
 // A quad (counter-clockwise as given) appended to `mesh` with material `material`.
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material);
+
+// The furnace (notes section 5.1): the cube [-1,1]^3 seen from inside, every face of `material`
+// facing inward. With Kd = rho and Ke = Le the exact radiance at depth K is
+// Le (1 - rho^(K+1)) / (1 - rho).
+MeshData furnaceMesh(const Material& material);
+// A ray from inside the furnace, away from its centre and its symmetry planes.
+Ray furnaceRay();
+double furnaceRadiance(double albedo, double emission, int depth);
+
+// Lambert's polygon case (notes section 5.2): a receiver plane z = 0 of `receiver` (large,
+// facing up) under the unit square [-1/2,1/2]^2 at z = 1, emitting 1 downward (and black).
+// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance.
+MeshData lambertSquareMesh(const Material& receiver);
+inline constexpr double kLambertSquareIrradiance = 0.752274688454;
+// The ray that sees the origin of the receiver, from `from` (above the plane, below the square).
+Ray rayToOrigin(const glm::vec3& from);
+
+// The luminance of `ray`'s radiance, averaged over `passes` full passes (24 paths each) at each
+// of `pixels` distinct pixels (seed fixed): one value per pixel, independent across pixels,
+// stratified within a pixel as the sampler does it.
+std::vector<double> pixelEstimates(const PathIntegrator& integrator, const Ray& ray, int pixels,
+                                   uint32_t passes, uint64_t seed);
 
 }  // namespace strata::test

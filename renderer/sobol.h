@@ -1,0 +1,35 @@
+#pragma once
+// An Owen-scrambled Sobol' (0,2)-sequence in base 2, for stratifying each of the 24 strata
+// progressively (`strata24-qmc`, the paper's future work: uniform separation combined with
+// low-discrepancy points).
+//
+// The first two Sobol' dimensions form a (0,2)-sequence: for every m, each aligned block of 2^m
+// consecutive points is a (0,m,2)-net, i.e. every dyadic box of area 2^-m holds exactly one
+// point. Owen's nested uniform scrambling (Owen 1995, "Randomly permuted (t,m,s)-nets and
+// (t,s)-sequences") permutes the binary digits of each coordinate, every digit's flip depending
+// on the digits above it; it keeps the net property and makes each point uniform on [0,1)^2, so
+// every point alone is an unbiased sample. The scramble here is the hash-based one of Burley 2020
+// ("Practical Hash-based Owen Scrambling", JCGT 9(4)), which also shuffles the order of the
+// points by Owen-scrambling the index: that decorrelates streams that share an index (one
+// stream per pixel, bounce and stratum, all indexed by the pass) while each aligned block of
+// 2^m consecutive indices still maps to a (0,m,2)-net.
+#include <cstdint>
+#include <glm/vec2.hpp>
+
+namespace strata {
+
+// The unscrambled sequence as 32-bit fixed-point coordinates (x = value / 2^32): the first
+// coordinate is the base-2 radical inverse (van der Corput); the second uses the generator
+// matrix of Sobol's second dimension (Pascal's triangle mod 2).
+uint32_t sobolFirstCoordinate(uint32_t index);
+uint32_t sobolSecondCoordinate(uint32_t index);
+
+// Nested uniform (Owen) scrambling of the binary digits of `value`, most significant first,
+// chosen by `seed`: a bijection of 32-bit values in which bit k of the result depends only on
+// bit k and the bits above it.
+uint32_t owenScramble(uint32_t value, uint32_t seed);
+
+// Point `index` of the scrambled, shuffled sequence of stream `streamKey`, in [0,1)^2.
+glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey);
+
+}  // namespace strata
