@@ -4,6 +4,7 @@
 //    "point_lights":[{"position":[x,y,z], "intensity":[r,g,b]}]}     (point_lights optional)
 // Unknown keys are ignored so that later versions can add their own.
 #include <filesystem>
+#include <string>
 #include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -30,6 +31,9 @@ struct SceneSettings {
 // Reads and validates a scene's JSON sidecar; throws strata::Error naming the file (and line for
 // syntax errors, the key for a bad value).
 SceneSettings loadSceneSettings(const std::filesystem::path& path);
+// The same from memory: `name` stands for the file in messages. loadSceneSettings reads the file
+// and calls this, so the loader fuzzer exercises the one code path.
+SceneSettings parseSceneSettings(const std::string& text, const std::string& name);
 
 class Camera {
 public:

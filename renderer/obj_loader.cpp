@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -36,11 +37,22 @@ std::vector<std::string_view> splitWords(std::string_view line) {
     return words;
 }
 
-bool isNumber(std::string_view word) {
+enum class NumberKind { Finite, NonFinite, OutOfRange, Invalid };
+
+// What a word holds as a number. tinyobjloader reads "nan" and "inf" as 0 and converts doubles
+// beyond float range to float (undefined behaviour), so both must be caught here, before it reads
+// them: a vertex coordinate "nan"/"inf" marks the vertex non-finite (its triangles are dropped and
+// counted), anything else that is not a finite float is an error on its line.
+NumberKind classifyNumber(std::string_view word) {
     double value;
     if (!word.empty() && word.front() == '+') word.remove_prefix(1);
     const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
-    return result.ec == std::errc() && result.ptr == word.data() + word.size();
+    if (result.ptr != word.data() + word.size() || word.empty()) return NumberKind::Invalid;
+    if (result.ec == std::errc::result_out_of_range) return NumberKind::OutOfRange;
+    if (result.ec != std::errc()) return NumberKind::Invalid;
+    if (!std::isfinite(value)) return NumberKind::NonFinite;
+    return std::abs(value) <= std::numeric_limits<float>::max() ? NumberKind::Finite
+                                                                 : NumberKind::OutOfRange;
 }
 
 bool isInteger(std::string_view word) {
@@ -86,29 +98,46 @@ void forEachLine(const std::string& text, Visit visit) {
     }
 }
 
-void checkNumbers(const std::string& name, size_t line, const std::vector<std::string_view>& words,
-                  size_t minCount, size_t maxCount) {
+// Checks the count and the values of a line's numbers. Returns whether they are all finite;
+// a non-finite one is an error unless `allowNonFinite`.
+bool checkNumbers(const std::string& name, size_t line, const std::vector<std::string_view>& words,
+                  size_t minCount, size_t maxCount, bool allowNonFinite = false) {
     const size_t count = words.size() - 1;
     if (count < minCount || count > maxCount) {
         failAt(name, line, "'" + std::string(words[0]) + "' takes " + std::to_string(minCount) +
                                (maxCount > minCount ? " to " + std::to_string(maxCount) : "") +
                                " numbers, got " + std::to_string(count));
     }
+    bool finite = true;
     for (size_t i = 1; i < words.size(); ++i) {
-        if (!isNumber(words[i])) {
-            failAt(name, line, "'" + std::string(words[i]) + "' is not a number");
+        const std::string word(words[i]);
+        switch (classifyNumber(words[i])) {
+            case NumberKind::Finite: break;
+            case NumberKind::NonFinite:
+                if (!allowNonFinite) failAt(name, line, "'" + word + "' is not a finite number");
+                finite = false;
+                break;
+            case NumberKind::OutOfRange:
+                failAt(name, line, "'" + word + "' is out of range for a 32-bit float");
+            case NumberKind::Invalid: failAt(name, line, "'" + word + "' is not a number");
         }
     }
+    return finite;
 }
 
-// Returns the mtllib file names.
-std::vector<std::string> validateObj(const std::string& text, const std::string& name) {
-    std::vector<std::string> libraries;
+struct ObjScan {
+    std::vector<std::string> libraries;     // mtllib file names
+    std::vector<size_t> nonFiniteVertices;  // 0-based indices of vertices with a nan/inf coordinate
+};
+
+ObjScan validateObj(const std::string& text, const std::string& name) {
+    ObjScan scan;
     size_t vertices = 0;
     forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "v") {
-            checkNumbers(name, line, words, 3, 7);  // x y z [w] or x y z r g b
+            // x y z [w] or x y z r g b
+            if (!checkNumbers(name, line, words, 3, 7, true)) scan.nonFiniteVertices.push_back(vertices);
             ++vertices;
         } else if (key == "vn") {
             checkNumbers(name, line, words, 3, 3);
@@ -131,12 +160,12 @@ std::vector<std::string> validateObj(const std::string& text, const std::string&
             }
         } else if (key == "mtllib") {
             if (words.size() < 2) failAt(name, line, "mtllib needs a file name");
-            for (size_t i = 1; i < words.size(); ++i) libraries.emplace_back(words[i]);
+            for (size_t i = 1; i < words.size(); ++i) scan.libraries.emplace_back(words[i]);
         } else if (key == "usemtl") {
             if (words.size() != 2) failAt(name, line, "usemtl needs one material name");
         }
     });
-    return libraries;
+    return scan;
 }
 
 void validateMtl(const std::string& text, const std::string& name) {
@@ -166,7 +195,8 @@ bool isFinite(const glm::vec3& v) {
 
 // Builds the mesh from text that validateObj and validateMtl have accepted.
 MeshData buildMesh(const std::string& objText, const std::string& objName,
-                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
+                   const std::string& mtlText, const std::string& mtlName, const ObjScan& scan,
+                   ObjLoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
@@ -188,6 +218,10 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     mesh.positions.reserve(attrib.vertices.size() / 3);
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
         mesh.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+    }
+    // tinyobjloader read these as 0; restore them as non-finite so that their triangles are dropped.
+    for (size_t v : scan.nonFiniteVertices) {
+        if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
     for (const auto& m : reader.GetMaterials()) {
         Material material;
@@ -239,6 +273,7 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     if (report) {
         report->faces = mesh.triangles.size();
         report->droppedTriangles = dropped;
+        report->nonFiniteVertices = scan.nonFiniteVertices.size();
     }
     return mesh;
 }
@@ -247,16 +282,17 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
 
 MeshData parseObj(const std::string& objText, const std::string& objName,
                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
-    validateObj(objText, objName);
+    const ObjScan scan = validateObj(objText, objName);
     validateMtl(mtlText, mtlName);
-    return buildMesh(objText, objName, mtlText, mtlName, report);
+    return buildMesh(objText, objName, mtlText, mtlName, scan, report);
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
     const std::string objText = readText(path, "scene");
     std::string mtlText;
     std::string mtlNames;
-    for (const auto& library : validateObj(objText, path.string())) {
+    const ObjScan scan = validateObj(objText, path.string());
+    for (const auto& library : scan.libraries) {
         const auto mtlPath = path.parent_path() / library;
         const std::string text = readText(mtlPath, "material library (named by mtllib)");
         validateMtl(text, mtlPath.string());
@@ -264,7 +300,7 @@ MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
         mtlNames += (mtlNames.empty() ? "" : ",") + mtlPath.string();
     }
     return buildMesh(objText, path.string(), mtlText, mtlNames.empty() ? path.string() : mtlNames,
-                     report);
+                     scan, report);
 }
 
 }  // namespace strata

@@ -12,6 +12,7 @@ namespace strata {
 struct ObjLoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
+    size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
 };
 
 // Loads `path` and the MTL files its `mtllib` lines name (relative to its folder). Throws
