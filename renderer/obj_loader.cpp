@@ -189,6 +189,22 @@ void validateMtl(const std::string& text, const std::string& name) {
     });
 }
 
+// The text with every comment ('#' to the end of its line) removed, as forEachLine reads it.
+std::string withoutComments(const std::string& text) {
+    std::string kept;
+    kept.reserve(text.size());
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const size_t hash = text.find('#', start);
+        kept.append(text, start, (hash < end ? hash : end) - start);
+        if (end < text.size()) kept += '\n';
+        start = end + 1;
+    }
+    return kept;
+}
+
 bool isFinite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -201,7 +217,10 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(objText, mtlText, config)) {
+    // tinyobjloader reads '#' as a comment only at the start of a line; the checks above read it
+    // anywhere. It must parse what was checked, or "f 1 2 3 # 5" reads a face the checks never saw
+    // (a fuzzer finding: an index past the last vertex read out of bounds).
+    if (!reader.ParseFromString(withoutComments(objText), withoutComments(mtlText), config)) {
         std::string error = reader.Error();
         while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
         throw Error(objName + ": " + (error.empty() ? "cannot parse" : error));
@@ -249,6 +268,11 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
             const std::array<uint32_t, 3> tri{static_cast<uint32_t>(indices[3 * f].vertex_index),
                                               static_cast<uint32_t>(indices[3 * f + 1].vertex_index),
                                               static_cast<uint32_t>(indices[3 * f + 2].vertex_index)};
+            // validateObj checked every index, so this guards only against tinyobjloader reading
+            // a line differently from it.
+            for (uint32_t index : tri) {
+                if (index >= mesh.positions.size()) throw Error(objName + ": a face refers to a missing vertex");
+            }
             const glm::vec3& a = mesh.positions[tri[0]];
             const glm::vec3& b = mesh.positions[tri[1]];
             const glm::vec3& c = mesh.positions[tri[2]];
