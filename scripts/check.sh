@@ -4,7 +4,8 @@
 #   tsan - ThreadSanitizer build (build-tsan): the tests whose names contain "threads" (the
 #          multithreaded render, and any render/UI hand-off test named that way).
 #   fuzz - clang-14 libFuzzer + ASan + UBSan build (build-fuzz) of tests/fuzz: the scene-loader
-#          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000) from the seed corpus
+#          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000, at most STRATA_FUZZ_SECONDS,
+#          default 180, on a loaded machine) from the seed corpus
 #          tests/fuzz/corpus. A finding is saved in build-fuzz/findings/ and fails the check; turn
 #          it into a case of tests/test_fuzz_regressions.cpp.
 # Usage: bash scripts/check.sh asan|tsan|fuzz...   (scripts/test.sh runs all three in CI)
@@ -38,7 +39,8 @@ run_fuzz() {
         -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14
     mkdir -p build-fuzz/corpus build-fuzz/findings
     # The seed corpus stays read-only; what the fuzzer learns goes to build-fuzz/corpus.
-    build-fuzz/tests/fuzz/fuzz_scene_loaders -runs="${STRATA_FUZZ_RUNS:-200000}" -max_len=4096 \
+    build-fuzz/tests/fuzz/fuzz_scene_loaders -runs="${STRATA_FUZZ_RUNS:-200000}" \
+        -max_total_time="${STRATA_FUZZ_SECONDS:-180}" -max_len=4096 \
         -dict=tests/fuzz/loaders.dict -artifact_prefix=build-fuzz/findings/ -print_final_stats=1 \
         build-fuzz/corpus tests/fuzz/corpus 2>&1 | grep -E "^(Done|stat::|==|SUMMARY)|ERROR|crash|leak" || true
     if compgen -G "build-fuzz/findings/*" >/dev/null; then
