@@ -2,7 +2,8 @@
 # Checking builds that find what the tests miss, each in its own build folder, timed:
 #   asan - AddressSanitizer + UndefinedBehaviorSanitizer build (build-asan): the whole test suite.
 #   tsan - ThreadSanitizer build (build-tsan): the tests whose names contain "threads" (the
-#          multithreaded render, and any render/UI hand-off test named that way).
+#          multithreaded render, and any render/UI hand-off test named that way;
+#          STRATA_TSAN_TESTS=. runs the whole suite).
 #   fuzz - clang-14 libFuzzer + ASan + UBSan build (build-fuzz) of tests/fuzz: the scene-loader
 #          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000, at most STRATA_FUZZ_SECONDS,
 #          default 180, on a loaded machine) from the seed corpus
@@ -31,7 +32,7 @@ run_asan() {
 run_tsan() {
     configure_and_build build-tsan "" -DSTRATA_SANITIZE=thread
     TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/tsan.supp} \
-        ctest --test-dir build-tsan --output-on-failure --timeout 900 -R threads
+        ctest --test-dir build-tsan --output-on-failure --timeout 900 -R "${STRATA_TSAN_TESTS:-threads}"
 }
 
 run_fuzz() {
