@@ -197,8 +197,8 @@ std::string withoutComments(const std::string& text) {
     while (start < text.size()) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
-        const size_t hash = text.find('#', start);
-        kept.append(text, start, (hash < end ? hash : end) - start);
+        const std::string_view line(text.data() + start, end - start);
+        kept.append(line.substr(0, line.find('#')));
         if (end < text.size()) kept += '\n';
         start = end + 1;
     }

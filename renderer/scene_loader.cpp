@@ -53,10 +53,10 @@ std::string describeScene(const LoadedScene& loaded) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "%s: %zu triangles (%zu degenerate dropped, %zu non-finite vertices), "
-                  "%zu emitting (area %.4g), "
-                  "max albedo %.3g, %zu point lights",
+                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights",
                   loaded.objPath.string().c_str(), s.triangles, loaded.report.droppedTriangles,
-                  loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo, loaded.scene.mesh().pointLights.size());
+                  loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
+                  loaded.scene.mesh().pointLights.size());
     return line;
 }
 
