@@ -31,8 +31,8 @@ struct SceneSettings {
 // Reads and validates a scene's JSON sidecar; throws strata::Error naming the file (and line for
 // syntax errors, the key for a bad value).
 SceneSettings loadSceneSettings(const std::filesystem::path& path);
-// The same from the file's text (read elsewhere, e.g. on another MPI rank); `name` is the file
-// named in messages. loadSceneSettings reads the file and calls this.
+// The same from memory: `name` stands for the file in messages. loadSceneSettings reads the file
+// and calls this, so the loader fuzzer exercises the one code path.
 SceneSettings parseSceneSettings(const std::string& text, const std::string& name);
 
 class Camera {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string_view>
 #include <vector>
@@ -29,11 +30,22 @@ std::vector<std::string_view> splitWords(std::string_view line) {
     return words;
 }
 
-bool isNumber(std::string_view word) {
+enum class NumberKind { Finite, NonFinite, OutOfRange, Invalid };
+
+// What a word holds as a number. tinyobjloader reads "nan" and "inf" as 0 and converts doubles
+// beyond float range to float (undefined behaviour), so both must be caught here, before it reads
+// them: a vertex coordinate "nan"/"inf" marks the vertex non-finite (its triangles are dropped and
+// counted), anything else that is not a finite float is an error on its line.
+NumberKind classifyNumber(std::string_view word) {
     double value;
     if (!word.empty() && word.front() == '+') word.remove_prefix(1);
     const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
-    return result.ec == std::errc() && result.ptr == word.data() + word.size();
+    if (result.ptr != word.data() + word.size() || word.empty()) return NumberKind::Invalid;
+    if (result.ec == std::errc::result_out_of_range) return NumberKind::OutOfRange;
+    if (result.ec != std::errc()) return NumberKind::Invalid;
+    if (!std::isfinite(value)) return NumberKind::NonFinite;
+    return std::abs(value) <= std::numeric_limits<float>::max() ? NumberKind::Finite
+                                                                 : NumberKind::OutOfRange;
 }
 
 bool isInteger(std::string_view word) {
@@ -79,29 +91,46 @@ void forEachLine(const std::string& text, Visit visit) {
     }
 }
 
-void checkNumbers(const std::string& name, size_t line, const std::vector<std::string_view>& words,
-                  size_t minCount, size_t maxCount) {
+// Checks the count and the values of a line's numbers. Returns whether they are all finite;
+// a non-finite one is an error unless `allowNonFinite`.
+bool checkNumbers(const std::string& name, size_t line, const std::vector<std::string_view>& words,
+                  size_t minCount, size_t maxCount, bool allowNonFinite = false) {
     const size_t count = words.size() - 1;
     if (count < minCount || count > maxCount) {
         failAt(name, line, "'" + std::string(words[0]) + "' takes " + std::to_string(minCount) +
                                (maxCount > minCount ? " to " + std::to_string(maxCount) : "") +
                                " numbers, got " + std::to_string(count));
     }
+    bool finite = true;
     for (size_t i = 1; i < words.size(); ++i) {
-        if (!isNumber(words[i])) {
-            failAt(name, line, "'" + std::string(words[i]) + "' is not a number");
+        const std::string word(words[i]);
+        switch (classifyNumber(words[i])) {
+            case NumberKind::Finite: break;
+            case NumberKind::NonFinite:
+                if (!allowNonFinite) failAt(name, line, "'" + word + "' is not a finite number");
+                finite = false;
+                break;
+            case NumberKind::OutOfRange:
+                failAt(name, line, "'" + word + "' is out of range for a 32-bit float");
+            case NumberKind::Invalid: failAt(name, line, "'" + word + "' is not a number");
         }
     }
+    return finite;
 }
 
-// Returns the mtllib file names.
-std::vector<std::string> validateObj(const std::string& text, const std::string& name) {
-    std::vector<std::string> libraries;
+struct ObjScan {
+    std::vector<std::string> libraries;     // mtllib file names
+    std::vector<size_t> nonFiniteVertices;  // 0-based indices of vertices with a nan/inf coordinate
+};
+
+ObjScan validateObj(const std::string& text, const std::string& name) {
+    ObjScan scan;
     size_t vertices = 0;
     forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "v") {
-            checkNumbers(name, line, words, 3, 7);  // x y z [w] or x y z r g b
+            // x y z [w] or x y z r g b
+            if (!checkNumbers(name, line, words, 3, 7, true)) scan.nonFiniteVertices.push_back(vertices);
             ++vertices;
         } else if (key == "vn") {
             checkNumbers(name, line, words, 3, 3);
@@ -124,12 +153,12 @@ std::vector<std::string> validateObj(const std::string& text, const std::string&
             }
         } else if (key == "mtllib") {
             if (words.size() < 2) failAt(name, line, "mtllib needs a file name");
-            for (size_t i = 1; i < words.size(); ++i) libraries.emplace_back(words[i]);
+            for (size_t i = 1; i < words.size(); ++i) scan.libraries.emplace_back(words[i]);
         } else if (key == "usemtl") {
             if (words.size() != 2) failAt(name, line, "usemtl needs one material name");
         }
     });
-    return libraries;
+    return scan;
 }
 
 // Returns the names of the materials that give a roughness Pr (the others take it from Ns:
@@ -160,19 +189,38 @@ std::set<std::string> validateMtl(const std::string& text, const std::string& na
     return withRoughness;
 }
 
+// The text with every comment ('#' to the end of its line) removed, as forEachLine reads it.
+std::string withoutComments(const std::string& text) {
+    std::string kept;
+    kept.reserve(text.size());
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string_view line(text.data() + start, end - start);
+        kept.append(line.substr(0, line.find('#')));
+        if (end < text.size()) kept += '\n';
+        start = end + 1;
+    }
+    return kept;
+}
+
 bool isFinite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 // Builds the mesh from text that validateObj and validateMtl have accepted.
 MeshData buildMesh(const std::string& objText, const std::string& objName,
-                   const std::string& mtlText, const std::string& mtlName,
+                   const std::string& mtlText, const std::string& mtlName, const ObjScan& scan,
                    const std::set<std::string>& withRoughness, ObjLoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(objText, mtlText, config)) {
+    // tinyobjloader reads '#' as a comment only at the start of a line; the checks above read it
+    // anywhere. It must parse what was checked, or "f 1 2 3 # 5" reads a face the checks never saw
+    // (a fuzzer finding: an index past the last vertex read out of bounds).
+    if (!reader.ParseFromString(withoutComments(objText), withoutComments(mtlText), config)) {
         std::string error = reader.Error();
         while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
         throw Error(objName + ": " + (error.empty() ? "cannot parse" : error));
@@ -189,6 +237,10 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     mesh.positions.reserve(attrib.vertices.size() / 3);
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
         mesh.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+    }
+    // tinyobjloader read these as 0; restore them as non-finite so that their triangles are dropped.
+    for (size_t v : scan.nonFiniteVertices) {
+        if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
     for (const auto& m : reader.GetMaterials()) {
         Material material;
@@ -228,6 +280,11 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
             const std::array<uint32_t, 3> tri{static_cast<uint32_t>(indices[3 * f].vertex_index),
                                               static_cast<uint32_t>(indices[3 * f + 1].vertex_index),
                                               static_cast<uint32_t>(indices[3 * f + 2].vertex_index)};
+            // validateObj checked every index, so this guards only against tinyobjloader reading
+            // a line differently from it.
+            for (uint32_t index : tri) {
+                if (index >= mesh.positions.size()) throw Error(objName + ": a face refers to a missing vertex");
+            }
             const glm::vec3& a = mesh.positions[tri[0]];
             const glm::vec3& b = mesh.positions[tri[1]];
             const glm::vec3& c = mesh.positions[tri[2]];
@@ -252,6 +309,7 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     if (report) {
         report->faces = mesh.triangles.size();
         report->droppedTriangles = dropped;
+        report->nonFiniteVertices = scan.nonFiniteVertices.size();
     }
     return mesh;
 }
@@ -260,15 +318,15 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
 
 MeshData parseObj(const std::string& objText, const std::string& objName,
                   const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
-    validateObj(objText, objName);
+    const ObjScan scan = validateObj(objText, objName);
     const auto withRoughness = validateMtl(mtlText, mtlName);
-    return buildMesh(objText, objName, mtlText, mtlName, withRoughness, report);
+    return buildMesh(objText, objName, mtlText, mtlName, scan, withRoughness, report);
 }
 
 ObjFiles readObjFiles(const std::filesystem::path& path) {
     ObjFiles files{readTextFile(path, "scene"), path.string(), "", ""};
     // Each MTL file is validated on its own so that a bad line is reported with its file and line.
-    for (const auto& library : validateObj(files.objText, files.objName)) {
+    for (const auto& library : validateObj(files.objText, files.objName).libraries) {
         const auto mtlPath = path.parent_path() / library;
         const std::string text = readTextFile(mtlPath, "material library (named by mtllib)");
         validateMtl(text, mtlPath.string());

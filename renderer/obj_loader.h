@@ -12,6 +12,7 @@ namespace strata {
 struct ObjLoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
+    size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
 };
 
 // The text of an OBJ and of the MTL files its `mtllib` lines name (joined), with the names used in

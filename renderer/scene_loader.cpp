@@ -66,10 +66,11 @@ std::string describeScene(const LoadedScene& loaded) {
     const SceneSummary& s = loaded.scene.summary();
     char line[512];
     std::snprintf(line, sizeof line,
-                  "%s: %zu triangles (%zu degenerate dropped), %zu emitting (area %.4g), "
-                  "max albedo %.3g, %zu point lights",
+                  "%s: %zu triangles (%zu degenerate dropped, %zu non-finite vertices), "
+                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights",
                   loaded.objPath.string().c_str(), s.triangles, loaded.report.droppedTriangles,
-                  s.emitters, s.emittingArea, s.maxAlbedo, loaded.scene.mesh().pointLights.size());
+                  loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
+                  loaded.scene.mesh().pointLights.size());
     return line;
 }
 

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Checking builds that find what the tests miss, each in its own build folder, timed:
+#   asan - AddressSanitizer + UndefinedBehaviorSanitizer build (build-asan): the whole test suite.
+#   tsan - ThreadSanitizer build (build-tsan): the tests whose names contain "threads" (the
+#          multithreaded render, and any render/UI hand-off test named that way;
+#          STRATA_TSAN_TESTS=. runs the whole suite).
+#   fuzz - clang-14 libFuzzer + ASan + UBSan build (build-fuzz) of tests/fuzz: the scene-loader
+#          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000, at most STRATA_FUZZ_SECONDS,
+#          default 180, on a loaded machine) from the seed corpus
+#          tests/fuzz/corpus. A finding is saved in build-fuzz/findings/ and fails the check; turn
+#          it into a case of tests/test_fuzz_regressions.cpp.
+# Usage: bash scripts/check.sh asan|tsan|fuzz...   (scripts/test.sh runs all three in CI)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=${STRATA_JOBS:-$(nproc)}
+
+configure_and_build() {  # folder, target ("" = all), cmake arguments...
+    local folder=$1 target=$2
+    shift 2
+    cmake -S . -B "$folder" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+    cmake --build "$folder" --parallel "$jobs" ${target:+--target "$target"}
+}
+
+run_asan() {
+    configure_and_build build-asan "" -DSTRATA_SANITIZE=address
+    # Leak checking needs ptrace, which containers often forbid: on where it works.
+    ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1} \
+    UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+        ctest --test-dir build-asan --output-on-failure --timeout 900 -j "$jobs"
+}
+
+run_tsan() {
+    configure_and_build build-tsan "" -DSTRATA_SANITIZE=thread
+    TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/tsan.supp} \
+        ctest --test-dir build-tsan --output-on-failure --timeout 900 -R "${STRATA_TSAN_TESTS:-threads}"
+}
+
+run_fuzz() {
+    configure_and_build build-fuzz fuzz_scene_loaders -DSTRATA_FUZZ=ON -DSTRATA_BUILD_TESTS=OFF \
+        -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14
+    mkdir -p build-fuzz/corpus build-fuzz/findings
+    # The seed corpus stays read-only; what the fuzzer learns goes to build-fuzz/corpus.
+    build-fuzz/tests/fuzz/fuzz_scene_loaders -runs="${STRATA_FUZZ_RUNS:-200000}" \
+        -max_total_time="${STRATA_FUZZ_SECONDS:-180}" -max_len=4096 \
+        -dict=tests/fuzz/loaders.dict -artifact_prefix=build-fuzz/findings/ -print_final_stats=1 \
+        build-fuzz/corpus tests/fuzz/corpus 2>&1 | grep -E "^(Done|stat::|==|SUMMARY)|ERROR|crash|leak" || true
+    if compgen -G "build-fuzz/findings/*" >/dev/null; then
+        echo "check fuzz: findings in build-fuzz/findings/" >&2
+        return 1
+    fi
+}
+
+(($#)) || { echo "usage: $0 asan|tsan|fuzz..." >&2; exit 2; }
+for check in "$@"; do
+    case $check in
+        asan | tsan | fuzz) ;;
+        *) echo "check: unknown check '$check' (use asan, tsan or fuzz)" >&2; exit 2 ;;
+    esac
+    start=$SECONDS
+    "run_$check"
+    echo "check $check: passed in $((SECONDS - start)) s" >&2
+done

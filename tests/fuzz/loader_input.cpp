@@ -1,0 +1,73 @@
+#include "loader_input.h"
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <glm/geometric.hpp>
+
+#include "camera.h"
+#include "error.h"
+#include "obj_loader.h"
+
+namespace strata::fuzz {
+namespace {
+
+void require(bool promise, const char* what) {
+    if (!promise) throw std::logic_error(std::string("the OBJ loader returned a mesh with ") + what);
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// What the loader promises of every mesh it returns (obj_loader.h, mesh.h), which the renderer
+// relies on: indices in range, one material per triangle, finite vertices and a non-zero float
+// area on every kept triangle, Kd in [0, 1] and finite Ke >= 0.
+void checkMesh(const MeshData& mesh, const ObjLoadReport& report) {
+    require(mesh.triangleMaterials.size() == mesh.triangles.size(), "not one material per triangle");
+    require(report.faces == mesh.triangles.size(), "a wrong face count");
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        require(mesh.triangleMaterials[i] < mesh.materials.size(), "a material index out of range");
+        for (uint32_t index : mesh.triangles[i]) {
+            require(index < mesh.positions.size(), "a vertex index out of range");
+            require(finite(mesh.positions[index]), "a non-finite vertex in a triangle");
+        }
+        const auto& t = mesh.triangles[i];
+        const glm::vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                       mesh.positions[t[2]] - mesh.positions[t[0]]);
+        require(glm::dot(n, n) > 0.0f, "a zero-area triangle");
+    }
+    for (const Material& m : mesh.materials) {
+        for (int c = 0; c < 3; ++c) {
+            require(m.diffuse[c] >= 0.0f && m.diffuse[c] <= 1.0f, "a Kd outside [0, 1]");
+            require(m.emission[c] >= 0.0f && std::isfinite(m.emission[c]), "a negative or non-finite Ke");
+        }
+    }
+}
+
+std::string_view nextPart(std::string_view& rest) {
+    const size_t end = rest.find('\0');
+    const std::string_view part = rest.substr(0, end);
+    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+    return part;
+}
+
+}  // namespace
+
+void parseLoaderInput(std::string_view input) {
+    const std::string obj(nextPart(input));
+    const std::string mtl(nextPart(input));
+    const std::string json(input);
+    try {
+        ObjLoadReport report;
+        const MeshData mesh = parseObj(obj, "fuzz.obj", mtl, "fuzz.mtl", &report);
+        checkMesh(mesh, report);
+    } catch (const Error&) {
+    }
+    try {
+        const SceneSettings settings = parseSceneSettings(json, "fuzz.json");
+        if (settings.width < 1 || settings.height < 1) throw std::logic_error("camera size below 1");
+    } catch (const Error&) {
+    }
+}
+
+}  // namespace strata::fuzz

@@ -1,0 +1,15 @@
+#pragma once
+// One input of the scene-loader fuzzer: OBJ text, a NUL byte, MTL text, a NUL byte, camera JSON
+// (missing parts are empty), fed through strata::parseObj and strata::parseSceneSettings, the
+// code paths of loading files. Shared by the fuzzer and tests/test_fuzz_regressions.cpp, which
+// replays the seed corpus and every finding.
+#include <string_view>
+
+namespace strata::fuzz {
+
+// Returns normally when the loaders accept the input or refuse it with strata::Error. Throws
+// std::logic_error when a returned mesh breaks the loader's promises; anything else that escapes
+// (another exception, a sanitizer report) is a finding too.
+void parseLoaderInput(std::string_view input);
+
+}  // namespace strata::fuzz

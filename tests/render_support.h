@@ -1,0 +1,35 @@
+#pragma once
+// Rendering small images in tests and judging them statistically: per-pixel means with their
+// standard errors, and the comparisons the stress tests share.
+#include <cstdint>
+#include <vector>
+#include <glm/vec3.hpp>
+
+#include "accumulation_buffer.h"
+#include "camera.h"
+#include "mesh.h"
+#include "progressive_renderer.h"
+#include "scene.h"
+
+namespace strata::test {
+
+// Renders `passes` whole passes into a fresh buffer.
+AccumulationBuffer renderPasses(const Scene& scene, const Camera& camera,
+                                const RenderSettings& settings, uint32_t passes);
+
+// The mesh and the camera pose moved by p -> scale * p + offset (computed in double, rounded once).
+MeshData transformMesh(MeshData mesh, double scale, const glm::dvec3& offset);
+CameraPose transformPose(const CameraPose& pose, double scale, const glm::dvec3& offset);
+
+// Pixel luminance means: the pixels are independent estimates of their own values.
+std::vector<double> pixelLuminances(const AccumulationBuffer& buffer);
+
+// Mean over pixels of z^2, z = (a - b) / sqrt(se_a^2 + se_b^2) with the per-pass standard errors:
+// about 1 when two renders with different seeds estimate the same image. Pixels with zero error
+// in both must agree exactly (else infinity); they do not count in the mean.
+double meanSquaredZ(const AccumulationBuffer& a, const AccumulationBuffer& b);
+
+// Whether every pixel mean is finite.
+bool allFinite(const AccumulationBuffer& buffer);
+
+}  // namespace strata::test
