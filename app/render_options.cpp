@@ -21,6 +21,9 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
         ->capture_default_str();
     command.add_option("--seed", seed, "Random seed")->capture_default_str();
     command.add_option("--threads", threads, "Render threads (0: all cores)")->capture_default_str();
+    command.add_option("--roulette-depth", rouletteDepth,
+                       "Russian roulette from this bounce on, survival by path weight (-1: off)")
+        ->capture_default_str();
     command.add_flag("--nee", nee,
                      "Next-event estimation: sample emitting triangles (MIS with the sampler) "
                      "and point lights (reached only this way)");
@@ -49,6 +52,8 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
+    if (rouletteDepth < -1) throw Error("--roulette-depth: must be -1 (off) or at least 0");
+    settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
     settings.threads = threads;
     return settings;

@@ -24,6 +24,7 @@ struct RenderOptions {
     uint64_t seed = 0;
     int threads = 0;
     bool nee = false;
+    int rouletteDepth = -1;
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);

@@ -1,5 +1,6 @@
 #include "path_integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -89,6 +90,11 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
             sampleDirection(settings_.sampler, samples, bounce, bsdf, wo);
         weight *= sampled.weight;
         if (isBlack(weight)) break;
+        if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
+            const float survival = std::min(1.0f, std::max(std::max(weight.x, weight.y), weight.z));
+            if (samples.roulette(bounce) >= survival) break;
+            weight /= survival;
+        }
         directionDensity = sampled.pdf;
         previousPoint = surface.point;
         const glm::vec3 direction = frame.toWorld(sampled.local);

@@ -34,6 +34,10 @@ struct PathIntegratorSettings {
     // emitting triangles (combined with the bounce's own direction by MIS) and one to every point
     // light (delta lights, reachable no other way).
     bool nextEventEstimation = false;
+    // Russian roulette from this many bounces on (-1: off): the path goes on with probability
+    // q = min(1, max component of its weight) and its weight is divided by q. Unbiased; it trades
+    // a little variance for not tracing paths whose weight has become small.
+    int rouletteDepth = -1;
 };
 
 // Why every path of this scene carries zero radiance, or nullopt when light can reach the camera:

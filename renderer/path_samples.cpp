@@ -13,6 +13,7 @@ constexpr uint64_t kFirstBounceDimension = 1;
 constexpr uint64_t kLobeDimension = 1ull << 40;
 constexpr uint64_t kLightDimension = 2ull << 40;
 constexpr uint64_t kLightPointDimension = 3ull << 40;
+constexpr uint64_t kRouletteDimension = 4ull << 40;
 constexpr uint64_t kSequenceTag = 0x736f626f6cull;  // "sobol"
 }  // namespace
 
@@ -47,6 +48,10 @@ glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {
 
 float PathSamples::lobeChoice(int bounce) const {
     return point(kLobeDimension + static_cast<uint64_t>(bounce)).x;
+}
+
+float PathSamples::roulette(int bounce) const {
+    return point(kRouletteDimension + static_cast<uint64_t>(bounce)).x;
 }
 
 glm::vec3 PathSamples::lightSample(int bounce) const {

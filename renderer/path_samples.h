@@ -26,6 +26,8 @@ public:
     int stratum(int bounce) const;
     // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`.
     float lobeChoice(int bounce) const;
+    // Uniform on [0,1): whether Russian roulette lets the path go on after `bounce`.
+    float roulette(int bounce) const;
     // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it.
     glm::vec3 lightSample(int bounce) const;
 

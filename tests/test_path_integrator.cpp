@@ -140,3 +140,26 @@ TEST_CASE("integrator: a point light through next-event estimation gives rho/pi 
     CHECK(PathIntegrator(scene, {1, SamplerKind::Strata24, false}).radiance(ray, samples, rays).x == 0.0f);
     CHECK(PathIntegrator(scene, {0, SamplerKind::Strata24, true}).radiance(ray, samples, rays).x == 0.0f);
 }
+
+TEST_CASE("integrator: Russian roulette is unbiased on the furnace and ends paths early") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
+    const Camera camera(loaded.settings.pose, 16, 16);
+    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24}) {
+        AccumulationBuffer plain(16, 16), roulette(16, 16);
+        ProgressiveRenderer withoutRoulette(loaded.scene, camera, {{8, sampler, false}, 5, 0});
+        PathIntegratorSettings settings{8, sampler, false};
+        settings.rouletteDepth = 1;
+        ProgressiveRenderer withRoulette(loaded.scene, camera, {settings, 5, 0});
+        for (uint32_t pass = 0; pass < 6; ++pass) {
+            withoutRoulette.renderPass(plain, pass);
+            withRoulette.renderPass(roulette, pass);
+        }
+        std::vector<double> means;
+        for (size_t i = 0; i < roulette.pixelCount(); ++i) means.push_back(roulette.mean(i).x);
+        const auto estimate = test::estimateMean(means);
+        INFO(samplerName(sampler) << ": " << estimate.mean << " +- " << estimate.standardError);
+        CHECK(std::abs(estimate.mean - furnaceValue(8)) < 4.0 * estimate.standardError);
+        // Survival by weight (about rho per bounce) ends most paths well before depth 8.
+        CHECK(withRoulette.counters().rays < withoutRoulette.counters().rays / 2);
+    }
+}
