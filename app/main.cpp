@@ -5,6 +5,7 @@
 #include <CLI/Config.hpp>
 #include <CLI/Formatter.hpp>
 
+#include "bench_command.h"
 #include "error.h"
 #include "render_command.h"
 #include "samples_command.h"
@@ -12,6 +13,7 @@
 int main(int argc, char** argv) {
     CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
     app.require_subcommand(1);
+    strata::addBenchCommand(app);
     strata::addRenderCommand(app);
     strata::addSamplesCommand(app);
     try {
