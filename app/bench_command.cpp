@@ -100,8 +100,8 @@ std::string utcNow() {
 }
 
 void BenchCommand::run() const {
-    const int benchWidth = width > 0 ? width : (quick ? 48 : 128);
-    const int lastSpp = maxSpp > 0 ? maxSpp : (quick ? 24 * 16 : 24 * 32);
+    const int benchWidth = width > 0 ? width : (quick ? 48 : 96);
+    const int lastSpp = maxSpp > 0 ? maxSpp : 24 * 16;
     const int refSpp = referenceSpp > 0 ? referenceSpp : 16 * lastSpp;
     if (lastSpp % kPathsPerPass != 0 || refSpp % kPathsPerPass != 0) {
         throw Error("--max-spp and --reference-spp must be multiples of 24");
@@ -162,7 +162,7 @@ void BenchCommand::run() const {
     }
     if (vsEmbree) {
         PeerSettings peer;
-        peer.scene = (scenes.empty() ? root / ".." / "shared" / "scenes" : fs::path(scenes.front()).parent_path().parent_path()) /
+        peer.scene = (scenes.empty() ? root : repositoryRoot()) / ".." / "shared" / "scenes" /
                      "cornell_point" / "scene.obj";
         peer.depth = depths.front();
         peer.spp = quick ? 24 : 96;
@@ -190,8 +190,8 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--quick", command->quick, "Small sizes and budgets (CI smoke run, < 3 min on 2 cores)");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
     sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();
-    sub->add_option("--width", command->width, "Image width of the error runs (default 128; quick 48)");
-    sub->add_option("--max-spp", command->maxSpp, "Last checkpoint, a multiple of 24 (default 768; quick 384)");
+    sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
+    sub->add_option("--max-spp", command->maxSpp, "Last checkpoint, a multiple of 24 (default 384)");
     sub->add_option("--max-seconds", command->maxSeconds, "Time budget per run (stops at the next checkpoint)")
         ->capture_default_str();
     sub->add_flag("--make-reference", command->makeReference,

@@ -1,7 +1,6 @@
 #include "path_samples.h"
 
 #include "random.h"
-#include "stratum_schedule.h"
 
 namespace strata {
 namespace {
@@ -28,7 +27,8 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    return scheduledStratum(pixelKey_, pass_, step_, bounce);
+    if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
+    return schedule_->stratum(bounce);
 }
 
 }  // namespace strata
