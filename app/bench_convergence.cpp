@@ -11,6 +11,7 @@
 #include "image_metrics.h"
 #include "progress.h"
 #include "progressive_renderer.h"
+#include "ray_throughput.h"
 #include "reference_cache.h"
 #include "scene_loader.h"
 
@@ -82,9 +83,11 @@ ImageError measure(const Image& image, const Reference& reference) {
                               : compareImages(image, reference.image);
 }
 
-ConvergenceRun runOne(const LoadedScene& loaded, const Camera& camera, const RenderSettings& render,
-                      const Reference& reference, const ConvergenceSettings& settings) {
-    ConvergenceRun run{sceneName(loaded.objPath),
+ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const Camera& camera,
+                      const RenderSettings& render, const Reference& reference,
+                      const ConvergenceSettings& settings) {
+    ConvergenceRun run{label,
+                       loaded.objPath.string(),
                        std::string(samplerName(render.integrator.sampler)),
                        render.integrator.depth,
                        render.integrator.nextEventEstimation,
@@ -94,18 +97,20 @@ ConvergenceRun runOne(const LoadedScene& loaded, const Camera& camera, const Ren
     ProgressiveRenderer renderer(loaded.scene, camera, render);
     ProgressReporter progress(run.scene + "/" + run.sampler + "/d" + std::to_string(run.depth),
                               settings.maxPasses, kPathsPerPass);
-    double seconds = 0.0;
+    double seconds = 0.0, cpuSeconds = 0.0;
     uint32_t nextCheckpoint = 1;
     for (uint32_t pass = 0; pass < settings.maxPasses; ++pass) {
         const auto start = Clock::now();
+        const double cpuStart = processCpuSeconds();
         renderer.renderPass(buffer, pass);
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        cpuSeconds += processCpuSeconds() - cpuStart;
         progress.update(pass + 1, renderer.counters().paths);
         if (pass + 1 != nextCheckpoint) continue;
         nextCheckpoint *= 2;
         const ImageError error = measure(Image::fromMeans(buffer), reference);
         const RenderCounters counters = renderer.counters();
-        run.checkpoints.push_back(Checkpoint{seconds, (pass + 1) * kPathsPerPass, counters.paths,
+        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, (pass + 1) * kPathsPerPass, counters.paths,
                                              counters.rays, error.mse, error.rmse, error.relMse,
                                              efficiency(error.relMse, seconds),
                                              buffer.droppedSamples()});
@@ -117,12 +122,14 @@ ConvergenceRun runOne(const LoadedScene& loaded, const Camera& camera, const Ren
 }
 
 void writeRunCsv(const std::filesystem::path& dir, const ConvergenceRun& run) {
-    Table table{{"scene", "sampler", "depth", "nee", "reference", "seconds", "spp", "paths", "rays",
+    Table table{{"scene", "sampler", "depth", "nee", "reference", "seconds", "cpu_seconds", "spp",
+                 "paths", "rays",
                  "mse", "rmse", "relmse", "efficiency", "nonfinite"},
                 {}};
     for (const Checkpoint& c : run.checkpoints) {
         table.add({run.scene, run.sampler, std::to_string(run.depth), run.nee ? "1" : "0",
-                   run.reference, cell("%.6g", c.seconds), std::to_string(c.spp),
+                   run.reference, cell("%.6g", c.seconds), cell("%.6g", c.cpuSeconds),
+                   std::to_string(c.spp),
                    std::to_string(c.paths), std::to_string(c.rays), cell("%.6g", c.mse),
                    cell("%.6g", c.rmse), cell("%.6g", c.relMse), cell("%.6g", c.efficiency),
                    std::to_string(c.nonFinite)});
@@ -140,14 +147,14 @@ void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<Co
         "set output 'error-vs-time-" + stem + ".png'\n"
         "set datafile separator ','\n"
         "set logscale xy\nset grid\nset key top right\n"
-        "set xlabel 'render seconds'\nset ylabel 'RMSE against the reference'\n"
+        "set xlabel 'render CPU seconds (2 threads)'\nset ylabel 'RMSE against the reference'\n"
         "set title '" + runs.front().scene + ", depth " + std::to_string(runs.front().depth) +
         " (" + runs.front().reference + " reference)'\n"
         "plot ";
     for (size_t i = 0; i < runs.size(); ++i) {
         script += (i ? ", " : "") + std::string("'convergence-") + runs[i].scene + "-" +
                   runs[i].sampler + "-d" + std::to_string(runs[i].depth) +
-                  ".csv' using 'seconds':'rmse' with linespoints lw 2 title '" + runs[i].sampler + "'";
+                  ".csv' using 'cpu_seconds':'rmse' with linespoints lw 2 title '" + runs[i].sampler + "'";
     }
     runGnuplot(dir, "error-vs-time-" + stem, script + "\n");
 }
@@ -172,8 +179,12 @@ std::string slopeVerdict(const PowerLawFit& fit) {
 
 std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) {
     std::vector<ConvergenceRun> runs;
+    std::map<std::string, int> uses;  // two scenes may share a name (assets/cornell, shared cornell)
     for (const auto& scenePath : settings.scenes) {
         const LoadedScene loaded = loadScene(scenePath);
+        std::string label = sceneName(loaded.objPath);
+        if (const int n = ++uses[label]; n > 1) label.append("-").append(std::to_string(n));
+        std::fprintf(stderr, "bench scene %s: %s\n", label.c_str(), scenePath.string().c_str());
         const int height = std::max(1, static_cast<int>(std::lround(
             static_cast<double>(settings.width) * loaded.settings.height / loaded.settings.width)));
         const Camera camera(loaded.settings.pose, settings.width, height);
@@ -189,7 +200,7 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             std::vector<ConvergenceRun> group;
             for (const auto& name : settings.samplers) {
                 render.integrator.sampler = *parseSamplerKind(name);
-                group.push_back(runOne(loaded, camera, render, *reference, settings));
+                group.push_back(runOne(label, loaded, camera, render, *reference, settings));
                 writeRunCsv(settings.outDir, group.back());
             }
             plotErrorAgainstTime(settings.outDir, group);
@@ -200,7 +211,8 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
 }
 
 std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
-    Table finals{{"scene", "depth", "sampler", "reference", "spp", "seconds", "Mpaths/s", "Mrays/s",
+    Table finals{{"scene", "depth", "sampler", "reference", "spp", "seconds", "CPU-s", "Mpaths/CPU-s",
+                  "Mrays/CPU-s",
                   "RMSE", "relMSE", "efficiency 1/(relMSE s)", "RMSE slope vs spp", "verdict"},
                  {}};
     // Group the runs of one (scene, depth) to compare samplers.
@@ -217,9 +229,9 @@ std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
             verdict = slopeVerdict(fit);
         }
         finals.add({run.scene, std::to_string(run.depth), run.sampler, run.reference,
-                    std::to_string(last.spp), cell("%.3f", last.seconds),
-                    cell("%.3f", last.paths / last.seconds * 1e-6),
-                    cell("%.3f", last.rays / last.seconds * 1e-6), cell("%.4g", last.rmse),
+                    std::to_string(last.spp), cell("%.3f", last.seconds), cell("%.3f", last.cpuSeconds),
+                    cell("%.3f", last.paths / last.cpuSeconds * 1e-6),
+                    cell("%.3f", last.rays / last.cpuSeconds * 1e-6), cell("%.4g", last.rmse),
                     cell("%.4g", last.relMse), cell("%.4g", last.efficiency), slope, verdict});
     }
 
@@ -250,8 +262,8 @@ std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
                            ? cell("the paper's 1/24 is contradicted (%.1fx larger)", ratio * 24.0)
                            : std::string("consistent with the paper's 1/24");
             // Equal time: both curves at the shorter run's end; equal error: the larger final error.
-            const auto ts = column(*run, [](auto& c) { return c.seconds; });
-            const auto tu = column(base, [](auto& c) { return c.seconds; });
+            const auto ts = column(*run, [](auto& c) { return c.cpuSeconds; });
+            const auto tu = column(base, [](auto& c) { return c.cpuSeconds; });
             const auto es = column(*run, [](auto& c) { return c.rmse; });
             const auto eu = column(base, [](auto& c) { return c.rmse; });
             const double commonTime = std::min(ts.back(), tu.back());
@@ -262,18 +274,26 @@ std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
             const auto timeU = firstReach(tu, eu, commonError);
             ratios.add({key.first, std::to_string(key.second), run->sampler, cell("%.3f", ratio),
                         cell("%.4f", kPaperSection3Ratio), cell("%.4f", claim4), verdict,
-                        errorS && errorU ? cell("%.3f at %.2f s", *errorS / *errorU, commonTime) : "-",
+                        errorS && errorU ? cell("%.3f at %.2f CPU-s", *errorS / *errorU, commonTime) : "-",
                         timeS && timeU ? cell("%.3f at RMSE %.3g", *timeS / *timeU, commonError) : "-"});
         }
     }
-    return "### Error against time (last checkpoint per run)\n\n" + finals.markdown() +
+    Table files{{"scene", "file", "reference"}, {}};
+    for (const auto& [key, group] : groups) {
+        if (key.second == groups.begin()->first.second) {
+            files.add({key.first, group.front()->sceneFile, group.front()->reference});
+        }
+    }
+    return "### Scenes\n\n" + files.markdown() +
+           "\n### Error against time (last checkpoint per run)\n\n" + finals.markdown() +
            "\nSlopes are least-squares fits of log RMSE on log spp over all checkpoints (+- one "
            "standard error). The MSE includes the reference's own noise (references: 16x or more "
            "the bench's largest spp, analytic where exact), which flattens the last checkpoints a "
            "little.\n\n### Variance ratio against the paper's claims, equal time, equal error\n\n" +
            ratios.markdown() +
            "\nRatios below 1 favour the sampler over uniform. The variance ratio is the geometric "
-           "mean of MSE ratios over checkpoints at equal spp.\n";
+           "mean of MSE ratios over checkpoints at equal spp. Equal time and equal error use CPU "
+           "seconds: the machine is shared, and wall time moves with other people's load.\n";
 }
 
 }  // namespace strata

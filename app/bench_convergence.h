@@ -29,7 +29,8 @@ struct ConvergenceSettings {
 };
 
 struct Checkpoint {
-    double seconds = 0.0;  // render time only (error measurement excluded)
+    double seconds = 0.0;     // wall render time only (error measurement excluded)
+    double cpuSeconds = 0.0;  // the same in process CPU time, robust on a shared machine
     uint32_t spp = 0;
     uint64_t paths = 0;
     uint64_t rays = 0;
@@ -41,7 +42,8 @@ struct Checkpoint {
 };
 
 struct ConvergenceRun {
-    std::string scene;
+    std::string scene;      // a unique label: the scene's name, "-2" etc. when names repeat
+    std::string sceneFile;  // the OBJ
     std::string sampler;
     int depth = 0;
     bool nee = false;

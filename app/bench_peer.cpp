@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <tbb/info.h>
 #include <vector>
@@ -23,8 +24,13 @@ namespace {
 
 constexpr const char* kEmbreePathTracer = "pathtracer";
 
-// Runs argv (stdout and stderr to `log`); returns wall seconds, or a negative value on failure.
-double runTimed(std::vector<std::string> args, const std::filesystem::path& log) {
+struct Timing {
+    double wall = -1.0;  // negative: the program failed
+    double cpu = 0.0;    // user + system CPU seconds of the child
+};
+
+// Runs argv (stdout and stderr to `log`), timed.
+Timing runTimed(std::vector<std::string> args, const std::filesystem::path& log) {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -36,12 +42,15 @@ double runTimed(std::vector<std::string> args, const std::filesystem::path& log)
     pid_t pid = 0;
     const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return -1.0;
+    if (spawned != 0) return {};
     int status = 0;
-    waitpid(pid, &status, 0);
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? seconds : -1.0;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
+    const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
+    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime)};
 }
 
 // Mean of an 8-bit binary PPM (P6) as values in [0, 1] per channel.
@@ -121,34 +130,38 @@ std::string runPeerComparison(const PeerSettings& settings) {
                            number(light.intensity.y), number(light.intensity.z)});
     }
 
-    std::vector<double> strataTimes, embreeTimes;
+    std::vector<double> strataTimes, embreeTimes, strataCpu, embreeCpu;
     ProgressReporter progress("vs-embree", 2 * settings.repeats, 1);
     for (int r = 0; r < settings.repeats; ++r) {
         // Alternate which goes first so that neither always runs on a warmer machine.
         for (int k = 0; k < 2; ++k) {
             const bool strataTurn = (r + k) % 2 == 0;
-            const double t = runTimed(strataTurn ? strataArgs : embreeArgs, log);
-            if (t < 0.0) {
+            const Timing t = runTimed(strataTurn ? strataArgs : embreeArgs, log);
+            if (t.wall < 0.0) {
                 return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" +
                        std::string(strataTurn ? "strata render" : kEmbreePathTracer) +
                        "` failed (see " + log.string() + "; Debian package embree-tools).\n";
             }
-            (strataTurn ? strataTimes : embreeTimes).push_back(t);
+            (strataTurn ? strataTimes : embreeTimes).push_back(t.wall);
+            (strataTurn ? strataCpu : embreeCpu).push_back(t.cpu);
             progress.update(strataTimes.size() + embreeTimes.size(), 0);
         }
     }
     progress.finish(2 * settings.repeats, 0);
     const double paths = double(settings.width) * settings.height * settings.spp;
     const double ts = median(strataTimes), te = median(embreeTimes);
+    const double cs = median(strataCpu), ce = median(embreeCpu);
     const auto [strataMean, strataClamped] = exrMeans(strataImage);
     const double embreeMean = ppmMean(embreeImage);
 
     Table table{{"renderer", "wall s (median of " + std::to_string(settings.repeats) + ")",
-                 "Mpaths/s", "image mean", "image mean clamped to [0,1]"}, {}};
+                 "Mpaths/s", "CPU s (median)", "Mpaths/CPU-s", "image mean",
+                 "image mean clamped to [0,1]"}, {}};
     table.add({"strata render --nee (strata24)", cell("%.3f", ts), cell("%.3f", paths / ts * 1e-6),
-               cell("%.4f", strataMean), cell("%.4f", strataClamped)});
-    table.add({"embree pathtracer", cell("%.3f", te), cell("%.3f", paths / te * 1e-6), "-",
-               cell("%.4f", embreeMean)});
+               cell("%.3f", cs), cell("%.3f", paths / cs * 1e-6), cell("%.4f", strataMean),
+               cell("%.4f", strataClamped)});
+    table.add({"embree pathtracer", cell("%.3f", te), cell("%.3f", paths / te * 1e-6),
+               cell("%.3f", ce), cell("%.3f", paths / ce * 1e-6), "-", cell("%.4f", embreeMean)});
     writeTextFile(settings.outDir / "peer.csv", table.csv());
     return "\n### Against Embree's tutorial path tracer (" + settings.scene.string() + ")\n\n" +
            cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %d threads, whole-process "
@@ -156,11 +169,14 @@ std::string runPeerComparison(const PeerSettings& settings) {
                 settings.width, settings.height, settings.spp, settings.depth, settings.depth + 1,
                 threads) +
            table.markdown() +
-           cell("\nStrata paths/s / Embree paths/s: %.3f\n", te / ts) +
-           "\nWhat differs: Embree's tutorial stops a path once its weight falls below 0.01 "
-           "(biased, and cheaper), samples the cosine-weighted hemisphere (no strata), ignores "
-           "surface emission, and writes an 8-bit image clamped to [0, 1] (compare the clamped "
-           "means); Strata keeps every path to depth K and writes linear float EXR.\n";
+           cell("\nStrata paths/s / Embree paths/s: %.3f by wall time, %.3f by CPU time\n", te / ts,
+                ce / cs) +
+           "\nWhat differs: Embree's tutorial (renderPixelFunction in its pathtracer_device.cpp) "
+           "stops a path once the largest component of its weight falls below 0.01 (biased, and "
+           "cheaper), samples directions from its material's BRDF rather than uniformly or by "
+           "strata, ignores surface emission, and writes linear values clamped to [0, 1] as 8 "
+           "bits (compare the clamped means). Strata follows every path to depth K (no roulette, "
+           "no cut-off) and writes linear float EXR.\n";
 }
 
 }  // namespace strata

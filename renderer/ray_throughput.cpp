@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <time.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -123,6 +124,12 @@ uint64_t traceBlock(RTCScene scene, RayQuery query, const RaySet& set, size_t be
 
 }  // namespace
 
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 std::string_view rayQueryName(RayQuery query) {
     switch (query) {
         case RayQuery::Single: return "rtcIntersect1";
@@ -140,6 +147,7 @@ RayThroughput measureRandomRays(const Scene& scene, RayQuery query, int threads,
     tbb::task_arena arena = threads > 0 ? tbb::task_arena(threads) : tbb::task_arena();
     RayThroughput result;
     std::atomic<uint64_t> hits{0};
+    const double cpuStart = processCpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     do {
         arena.execute([&] {
@@ -151,6 +159,7 @@ RayThroughput measureRandomRays(const Scene& scene, RayQuery query, int threads,
         result.rays += kRayCount;
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     } while (result.seconds < minSeconds);
+    result.cpuSeconds = processCpuSeconds() - cpuStart;
     result.hits = hits.load();
     return result;
 }

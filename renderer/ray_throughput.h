@@ -21,9 +21,14 @@ std::string_view rayQueryName(RayQuery query);  // "rtcIntersect1", ...
 struct RayThroughput {
     uint64_t rays = 0;
     uint64_t hits = 0;
-    double seconds = 0.0;
+    double seconds = 0.0;     // wall
+    double cpuSeconds = 0.0;  // the process's CPU time: on a shared machine, the robust measure
     double raysPerSecond() const { return seconds > 0.0 ? rays / seconds : 0.0; }
+    double raysPerCpuSecond() const { return cpuSeconds > 0.0 ? rays / cpuSeconds : 0.0; }
 };
+
+// CPU time used so far by all threads of this process.
+double processCpuSeconds();
 
 // Traces rounds of random rays with `threads` threads (0: all) until `minSeconds` have passed.
 RayThroughput measureRandomRays(const Scene& scene, RayQuery query, int threads, double minSeconds,
