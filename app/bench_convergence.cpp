@@ -143,7 +143,7 @@ void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<Co
     if (runs.empty()) return;
     const std::string stem = runs.front().scene + "-d" + std::to_string(runs.front().depth);
     std::string script =
-        "set terminal pngcairo size 640,440 font ',10'\n"
+        "set terminal pngcairo noenhanced size 640,440 font ',10'\n"
         "set output 'error-vs-time-" + stem + ".png'\n"
         "set datafile separator ','\n"
         "set logscale xy\nset grid\nset key top right\n"
