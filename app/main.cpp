@@ -5,6 +5,7 @@
 #include <CLI/Config.hpp>
 #include <CLI/Formatter.hpp>
 
+#include "bench_command.h"
 #include "error.h"
 #include "render_command.h"
 #include "render_job.h"
@@ -13,6 +14,7 @@
 int main(int argc, char** argv) {
     CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
     app.require_subcommand(1);
+    strata::addBenchCommand(app);
     strata::addRenderCommand(app);
     strata::addSamplesCommand(app);
     // CLI11 reports a mistyped command only as "a subcommand is required"; name it instead.

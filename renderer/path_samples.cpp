@@ -2,7 +2,6 @@
 
 #include "random.h"
 #include "sobol.h"
-#include "stratum_schedule.h"
 
 namespace strata {
 namespace {
@@ -36,7 +35,8 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    return scheduledStratum(pixelKey_, pass_, step_, bounce);
+    if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
+    return schedule_->stratum(bounce);
 }
 
 glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {

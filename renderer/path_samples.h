@@ -3,8 +3,11 @@
 // a hash of (seed, pixel, pass, step, bounce, dimension) (see random.h), which is what makes
 // renders bit-identical for any thread count.
 #include <cstdint>
+#include <optional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "stratum_schedule.h"
 
 namespace strata {
 
@@ -42,6 +45,9 @@ private:
     uint64_t pathKey_;
     uint32_t pass_;
     int step_;
+    // The path's strata, worked out on the first stratum() call rather than at every bounce
+    // (and never for samplers that do not stratify).
+    mutable std::optional<PathSchedule> schedule_;
 };
 
 }  // namespace strata

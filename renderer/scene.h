@@ -52,6 +52,8 @@ public:
     // Bounding box of all vertices.
     glm::vec3 boundsMin() const { return boundsMin_; }
     glm::vec3 boundsMax() const { return boundsMax_; }
+    // The Embree scene, for measuring raw ray throughput on the same BVH (ray_throughput.h).
+    RTCScene embreeScene() const { return rtcScene_; }
 
 private:
     MeshData mesh_;

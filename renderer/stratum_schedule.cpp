@@ -43,15 +43,22 @@ int permuteStratum(int index, uint64_t key) {
     return static_cast<int>((i + rotation) % kStrataCount);
 }
 
-int scheduledStratum(uint64_t pixelKey, uint32_t pass, int step, int bounce) {
-    const uint64_t orderKey = hashCombine(hashCombine(pixelKey, kDeliveryOrderTag), pass);
-    const int canonical = permuteStratum(step, orderKey);
-    const uint64_t bounceKey = hashCombine(hashCombine(pixelKey, kBouncePermutationTag), bounce);
+PathSchedule::PathSchedule(uint64_t pixelKey, uint32_t pass, int step)
+    : permutationKey_(hashCombine(pixelKey, kBouncePermutationTag)),
+      pass_(pass),
+      canonical_(permuteStratum(step, hashCombine(hashCombine(pixelKey, kDeliveryOrderTag), pass))) {}
+
+int PathSchedule::stratum(int bounce) const {
+    const uint64_t bounceKey = hashCombine(permutationKey_, static_cast<uint64_t>(bounce));
     if (bounce < kProductStratifiedBounces) {
-        const int t = static_cast<int>((canonical + productOffset(pass, bounce)) % kStrataCount);
+        const int t = static_cast<int>((canonical_ + productOffset(pass_, bounce)) % kStrataCount);
         return permuteStratum(t, bounceKey);
     }
-    return permuteStratum(canonical, hashCombine(bounceKey, pass));
+    return permuteStratum(canonical_, hashCombine(bounceKey, pass_));
+}
+
+int scheduledStratum(uint64_t pixelKey, uint32_t pass, int step, int bounce) {
+    return PathSchedule(pixelKey, pass, step).stratum(bounce);
 }
 
 }  // namespace strata

@@ -39,4 +39,18 @@ int permuteStratum(int index, uint64_t key);
 // random key is `pixelKey` (PathSamples::pixelKey).
 int scheduledStratum(uint64_t pixelKey, uint32_t pass, int step, int bounce);
 
+// The same schedule with the work that depends only on the path (c = order_p(i) and the pixel's
+// permutation key) done once per path rather than at every bounce: a path tracer asks for every
+// bounce of a path in turn. PathSchedule(k, p, i).stratum(b) == scheduledStratum(k, p, i, b).
+class PathSchedule {
+public:
+    PathSchedule(uint64_t pixelKey, uint32_t pass, int step);
+    int stratum(int bounce) const;
+
+private:
+    uint64_t permutationKey_;  // the pixel's key for its per-bounce permutations sigma_b
+    uint32_t pass_;
+    int canonical_;            // c = order_p(i)
+};
+
 }  // namespace strata

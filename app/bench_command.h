@@ -1,0 +1,9 @@
+#pragma once
+// `strata bench`: run time against error, throughput against Embree's ceiling, and a peer (issue 5).
+#include <CLI/App.hpp>
+
+namespace strata {
+
+void addBenchCommand(CLI::App& app);
+
+}  // namespace strata

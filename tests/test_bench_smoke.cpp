@@ -1,0 +1,64 @@
+// The bench smoke test: `strata bench --quick` runs end to end (as CI does, keeping its summary in
+// the log) and its error curves are sane. Speed figures are printed, never asserted.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+}  // namespace
+
+TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as spp grows") {
+    const auto dir = test::scratchDir("bench-smoke");
+    const auto result = test::runStrata("bench --quick --out-dir " + dir.string());
+    MESSAGE(result.out);  // the summary, for the CI log
+    REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+    CHECK(std::filesystem::is_regular_file(dir / "summary.md"));
+
+    int runs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("convergence-", 0) != 0 || entry.path().extension() != ".csv") continue;
+        ++runs;
+        const auto rows = readCsv(entry.path());
+        REQUIRE(rows.size() >= 4);  // header + at least 3 checkpoints
+        const auto& header = rows.front();
+        const auto column = [&](const std::string& key) {
+            return static_cast<size_t>(std::find(header.begin(), header.end(), key) - header.begin());
+        };
+        const size_t rmse = column("rmse"), relmse = column("relmse"), nonfinite = column("nonfinite");
+        REQUIRE(rmse < header.size());
+        for (size_t r = 1; r < rows.size(); ++r) {
+            CHECK(std::isfinite(std::stod(rows[r][rmse])));
+            CHECK(std::isfinite(std::stod(rows[r][relmse])));
+            CHECK(rows[r][nonfinite] == "0");
+        }
+        INFO(name);
+        // 16x the samples: the error of an unbiased estimator falls by about 4; ask for 2. A
+        // zero-variance estimator (cosine or BSDF sampling of the furnace) is exact from the start
+        // and stays within float rounding of the exact value.
+        if (std::stod(rows[1][rmse]) == 0.0) {
+            CHECK(std::stod(rows.back()[rmse]) < 1e-3);
+        } else {
+            CHECK(std::stod(rows.back()[rmse]) < 0.5 * std::stod(rows[1][rmse]));
+        }
+    }
+    CHECK(runs >= 4);  // two bundled scenes x two samplers
+}
