@@ -8,12 +8,14 @@
 #include "error.h"
 #include "render_command.h"
 #include "samples_command.h"
+#include "view_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
     app.require_subcommand(1);
     strata::addRenderCommand(app);
     strata::addSamplesCommand(app);
+    strata::addViewCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
