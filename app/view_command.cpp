@@ -20,6 +20,7 @@ struct ViewCommand {
     std::vector<int> window{1280, 720};
     bool split = true;
     int targetSpp = 0;
+    float scale = 1.0f;
     float exposure = 0.0f;
     std::string tonemap = "clamp";
     bool json = false;
@@ -39,6 +40,7 @@ std::filesystem::path defaultScene() {
 void ViewCommand::run() const {
     if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
     if (frames < 0) throw Error("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use clamp|reinhard|aces)");
     if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
@@ -62,6 +64,7 @@ void ViewCommand::run() const {
     viewerSettings.seed = settings.seed;
     viewerSettings.threads = settings.threads;
     viewerSettings.targetSpp = targetSpp;
+    viewerSettings.resolutionScale = scale;
     viewerSettings.display.exposure = exposure;
     viewerSettings.display.tonemap = *tonemapKind;
 
@@ -131,6 +134,8 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
+        ->capture_default_str();
+    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
         ->capture_default_str();
     sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();

@@ -185,7 +185,7 @@ void Viewer::saveExr(const std::filesystem::path& stem) {
         const std::string suffix = shown_->sides.size() == 1 ? "" : (side == 0 ? ".left" : ".right");
         const std::filesystem::path path = stem.string() + suffix + ".exr";
         writeImage(path, image);
-        written += " " + path.string();
+        written.append(" ").append(path.string());
     }
     panel_.setMessage("wrote" + written);
 }

@@ -83,7 +83,7 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         int seed = static_cast<int>(settings.seed);
         if (ImGui::InputInt("seed", &seed)) settings.seed = static_cast<uint64_t>(std::max(seed, 0));
         ImGui::SliderInt("threads (0: all)", &settings.threads, 0, 64);
-        ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.125f, 1.0f, "%.3f");
+        ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.05f, 1.0f, "%.3f");
         ImGui::InputInt("target spp", &settings.targetSpp, kPathsPerPass, 10 * kPathsPerPass);
         remember("target spp");
         settings.targetSpp = std::max(settings.targetSpp, 0);
