@@ -19,6 +19,7 @@ struct DisplaySettings {
     float divider = 0.5f;      // fraction of the viewport width
     float errorScale = 0.25f;  // relative error at the top of the false-colour ramp
     float sampleScale = 1.0f;  // sample count at the top of the ramp
+    bool operator==(const DisplaySettings&) const = default;
 };
 
 struct Viewport {

@@ -43,6 +43,14 @@ void FrameTarget::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
+void FrameTarget::blitTo(const FrameTarget& target) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, target.width_, target.height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    target.bind();
+}
+
 void FrameTarget::resize(int width, int height) {
     if (framebuffer_ != 0) throw Error("OpenGL: an offscreen frame target has a fixed size");
     width_ = width;

@@ -21,6 +21,8 @@ public:
     FrameTarget(const FrameTarget&) = delete;
 
     void bind() const;
+    // Copies this target's pixels over all of `target` (nearest: scaling up keeps pixels crisp).
+    void blitTo(const FrameTarget& target) const;
     void resize(int width, int height);  // default framebuffer only: follows the window
     int width() const { return width_; }
     int height() const { return height_; }

@@ -70,7 +70,10 @@ RenderWorker::~RenderWorker() {
 void RenderWorker::configure(const WorkerConfig& config, bool restart) {
     {
         std::lock_guard lock(mutex_);
-        if (restart || version_ == 0 || needsRestart(config_, config)) ++generation_;
+        if (restart || version_ == 0 || needsRestart(config_, config)) {
+            ++generation_;
+            cancel_ = true;
+        }
         config_ = config;
         ++version_;
     }
@@ -97,6 +100,7 @@ void RenderWorker::run() {
             seenVersion = version_;
             config = config_;
             generation = generation_;
+            cancel_ = false;  // under the lock: a restart after this point cancels the next step
         }
         if (!job || job->generation != generation) {
             job = std::make_unique<Job>();
@@ -130,26 +134,26 @@ void RenderWorker::run() {
             publish(*job, true);
             continue;
         }
-        renderStep(*job);
-        publish(*job, false);
+        if (renderStep(*job)) publish(*job, false);
     }
 }
 
-void RenderWorker::renderStep(Job& job) {
+bool RenderWorker::renderStep(Job& job) {
     for (auto& side : job.sides) {
         const auto start = Clock::now();
         const uint64_t before = side.renderer->counters().paths;
-        side.renderer->renderStep(side.buffer, job.pass, job.step);
+        side.renderer->renderStep(side.buffer, job.pass, job.step, &cancel_);
         const double seconds = secondsSince(start);
         side.seconds += seconds;
         totalRenderSeconds_ += seconds;
         totalPaths_ += side.renderer->counters().paths - before;
+        if (cancel_) return false;
     }
-    if (++job.step < kPathsPerPass) return;
+    if (++job.step < kPathsPerPass) return true;
     job.step = 0;
     ++job.pass;
     // Noise is measured at complete passes; strata24's estimate needs two pass means.
-    if (job.pass < 2) return;
+    if (job.pass < 2) return true;
     for (auto& side : job.sides) {
         const AccumulationBuffer& buffer = side.buffer;
         const bool againstReference = job.reference && job.reference->width == buffer.width() &&
@@ -164,6 +168,7 @@ void RenderWorker::renderStep(Job& job) {
         side.history.push_back({static_cast<double>(job.spp()), side.seconds,
                                 std::sqrt(squares / static_cast<double>(buffer.pixelCount()))});
     }
+    return true;
 }
 
 void RenderWorker::publish(const Job& job, bool idle) {

@@ -5,6 +5,7 @@
 // only ever takes the latest one under a short lock: it never waits for a step or a pass.
 // Any change of scene, camera or setting restarts accumulation after the step in flight; a target
 // spp or a pause blocks the thread on a condition variable (no CPU) until something changes.
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -97,7 +98,8 @@ public:
 private:
     struct Job;
     void run();
-    void renderStep(Job& job);
+    // False when cancelled: the job is then stale and must not be published.
+    bool renderStep(Job& job);
     void publish(const Job& job, bool idle);
 
     std::mutex mutex_;  // guards config_, version_, generation_, stop_
@@ -106,6 +108,8 @@ private:
     uint64_t version_ = 0;
     uint64_t generation_ = 0;
     bool stop_ = false;
+    // Set with a restart so that the step in flight stops at its next tile.
+    std::atomic<bool> cancel_{false};
 
     std::mutex snapshotMutex_;  // guards latest_, taken_
     std::shared_ptr<const WorkerSnapshot> latest_;

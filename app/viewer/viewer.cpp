@@ -93,7 +93,7 @@ void Viewer::frame(const FrameTarget& target) {
     handleDivider(io, target);
     const auto now = std::chrono::steady_clock::now();
     if (camera_.update(io, !io.WantCaptureMouse && !draggingDivider_, !io.WantCaptureKeyboard)) lastMotion_ = now;
-    applyActions(actions, target);
+    applyActions(actions);
 
     WorkerConfig config;
     config.scene = scene_;
@@ -115,16 +115,30 @@ void Viewer::frame(const FrameTarget& target) {
         everConfigured_ = true;
     }
 
-    target.bind();
-    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
     DisplaySettings display = settings_.display;
     display.split = settings_.split && shown_ && shown_->sides.size() == 2;
     display.sampleScale = std::max(1.0f, shown_ ? static_cast<float>(shown_->spp) : 1.0f);
-    pipeline_.draw(display, Viewport{0, 0, target.width(), target.height()});
+    updateImage(display);
+    target.bind();
+    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (image_) image_->blitTo(target);
     drawOverlays(target);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Viewer::updateImage(const DisplaySettings& display) {
+    if (!shown_ || shown_->sides.empty()) return;
+    const DisplayImage& image = shown_->sides[0].image;
+    if (image.width < 1 || image.height < 1) return;
+    const bool resized = !image_ || image_->width() != image.width || image_->height() != image.height;
+    if (!resized && imageSnapshot_ == shown_.get() && imageSettings_ == display) return;
+    if (resized) image_.emplace(FrameTarget::offscreen(image.width, image.height));
+    image_->bind();
+    pipeline_.draw(display, Viewport{0, 0, image.width, image.height});
+    imageSnapshot_ = shown_.get();
+    imageSettings_ = display;
 }
 
 void Viewer::drawOverlays(const FrameTarget& target) {
@@ -145,29 +159,21 @@ void Viewer::drawOverlays(const FrameTarget& target) {
     }
 }
 
-void Viewer::applyActions(const PanelActions& actions, const FrameTarget& target) {
+void Viewer::applyActions(const PanelActions& actions) {
     if (actions.openScene) openScene(panel_.scenePath());
     if (actions.loadReference) loadReference(panel_.referencePath());
     try {
-        if (actions.savePng) savePng(panel_.outputStem() + ".png", target);
+        if (actions.savePng) savePng(panel_.outputStem() + ".png");
         if (actions.saveExr) saveExr(panel_.outputStem());
     } catch (const std::exception& e) {
         panel_.setMessage(e.what());
     }
 }
 
-void Viewer::savePng(const std::filesystem::path& path, const FrameTarget& target) {
-    if (!shown_ || shown_->sides.empty()) throw Error("nothing rendered yet");
-    // As displayed: the display shader over the image, without the panel, at the render size.
-    const DisplayImage& image = shown_->sides[0].image;
-    FrameTarget offscreen = FrameTarget::offscreen(image.width, image.height);
-    offscreen.bind();
-    DisplaySettings display = settings_.display;
-    display.split = settings_.split && shown_->sides.size() == 2;
-    display.sampleScale = std::max(1.0f, static_cast<float>(shown_->spp));
-    pipeline_.draw(display, Viewport{0, 0, image.width, image.height});
-    offscreen.writePng(path);
-    target.bind();
+void Viewer::savePng(const std::filesystem::path& path) {
+    // As displayed, without the panel, at the render size.
+    if (!image_) throw Error("nothing rendered yet");
+    image_->writePng(path);
     panel_.setMessage("wrote " + path.string());
 }
 

@@ -37,8 +37,12 @@ public:
 private:
     void handleDivider(const ImGuiIO& io, const FrameTarget& target);
     void drawOverlays(const FrameTarget& target);
-    void applyActions(const PanelActions& actions, const FrameTarget& target);
-    void savePng(const std::filesystem::path& path, const FrameTarget& target);
+    void applyActions(const PanelActions& actions);
+    // The displayed image at its render size, redrawn only when the snapshot or the display
+    // settings change: the display shader runs over the image's pixels, not the window's, and
+    // not every frame (llvmpipe's cost per frame is what keeps the UI responsive).
+    void updateImage(const DisplaySettings& display);
+    void savePng(const std::filesystem::path& path);
     void saveExr(const std::filesystem::path& stem);
 
     std::shared_ptr<const LoadedScene> scene_;
@@ -48,6 +52,9 @@ private:
     CameraController camera_;
     DisplayPipeline pipeline_;
     std::shared_ptr<const WorkerSnapshot> shown_;
+    std::optional<FrameTarget> image_;
+    const WorkerSnapshot* imageSnapshot_ = nullptr;
+    DisplaySettings imageSettings_;
     WorkerConfig configured_;
     bool everConfigured_ = false;
     bool draggingDivider_ = false;

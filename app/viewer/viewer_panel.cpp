@@ -9,7 +9,17 @@
 namespace strata::viewer {
 namespace {
 
-constexpr SamplerKind kSamplers[] = {SamplerKind::Uniform, SamplerKind::Strata24};
+// Every sampler the renderer knows, from its "a|b|..." list, so new ones appear in the combo.
+std::vector<SamplerKind> allSamplers() {
+    std::vector<SamplerKind> kinds;
+    const std::string names = samplerNames();
+    for (size_t begin = 0; begin <= names.size();) {
+        const size_t end = std::min(names.find('|', begin), names.size());
+        if (const auto kind = parseSamplerKind(names.substr(begin, end - begin))) kinds.push_back(*kind);
+        begin = end + 1;
+    }
+    return kinds;
+}
 constexpr const char* kViews[] = {"colour", "relative error", "sample count"};
 constexpr const char* kTonemaps[] = {"clamp", "reinhard", "aces"};
 constexpr int kMaxDepth = 64;
@@ -47,7 +57,7 @@ bool ViewerPanel::sideControls(const char* label, SideConfig& side) {
     const bool open = ImGui::BeginCombo(samplerLabel.c_str(), current.c_str());
     remember(samplerLabel);
     if (open) {
-        for (SamplerKind kind : kSamplers) {
+        for (SamplerKind kind : allSamplers()) {
             const std::string name(samplerName(kind));
             if (ImGui::Selectable(name.c_str(), kind == side.sampler)) {
                 changed |= kind != side.sampler;
@@ -65,10 +75,11 @@ bool ViewerPanel::sideControls(const char* label, SideConfig& side) {
 PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot) {
     PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Strata");
     ImGui::PushItemWidth(190.0f);
+    readouts(snapshot);
 
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Checkbox("split view", &settings.split);
@@ -91,6 +102,9 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         ImGui::SameLine();
         actions.reset = ImGui::Button("reset");
     }
+    if (snapshot && settings.split && ImGui::CollapsingHeader("Noise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        errorPlots(*snapshot, settings);
+    }
     if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
         int view = static_cast<int>(settings.display.view);
         ImGui::Combo("view", &view, kViews, IM_ARRAYSIZE(kViews));
@@ -103,10 +117,6 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
             ImGui::SliderFloat("error scale", &settings.display.errorScale, 0.001f, 1.0f, "%.3f",
                                ImGuiSliderFlags_Logarithmic);
         }
-    }
-    if (snapshot) readouts(*snapshot, settings);
-    if (snapshot && settings.split && ImGui::CollapsingHeader("Noise", ImGuiTreeNodeFlags_DefaultOpen)) {
-        errorPlots(*snapshot, settings);
     }
     if (ImGui::CollapsingHeader("Files")) {
         ImGui::InputText("scene .obj", scenePath_.data(), scenePath_.size());
@@ -124,22 +134,27 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
     return actions;
 }
 
-void ViewerPanel::readouts(const WorkerSnapshot& snapshot, const ViewerSettings& settings) {
-    if (!snapshot.error.empty()) {
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", snapshot.error.c_str());
+void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {
+    // Always three lines, so that the controls below never move under the pointer.
+    if (!snapshot || !snapshot->error.empty()) {
+        if (snapshot) {
+            ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", snapshot->error.c_str());
+        } else {
+            ImGui::TextUnformatted("starting");
+        }
+        ImGui::NewLine();
+        ImGui::NewLine();
         return;
     }
-    const double seconds = std::max(snapshot.elapsedSeconds, 1e-9);
-    ImGui::Text("%s  spp %u  passes %u  %.1f s", snapshot.preview ? "preview" : (snapshot.idle ? "done" : "rendering"),
-                snapshot.spp, snapshot.passes, snapshot.elapsedSeconds);
-    ImGui::Text("%.2f Msamples/s  %.2f Mrays/s", snapshot.paths / seconds * 1e-6, snapshot.rays / seconds * 1e-6);
-    if (snapshot.droppedSamples > 0) {
-        ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "non-finite samples dropped: %llu",
-                           static_cast<unsigned long long>(snapshot.droppedSamples));
-    } else {
-        ImGui::Text("non-finite samples dropped: 0");
-    }
-    (void)settings;
+    const double seconds = std::max(snapshot->elapsedSeconds, 1e-9);
+    ImGui::Text("%s  spp %u  passes %u  %.1f s",
+                snapshot->preview ? "preview" : (snapshot->idle ? "done" : "rendering"), snapshot->spp,
+                snapshot->passes, snapshot->elapsedSeconds);
+    ImGui::Text("%.2f Msamples/s  %.2f Mrays/s", snapshot->paths / seconds * 1e-6,
+                snapshot->rays / seconds * 1e-6);
+    ImGui::TextColored(snapshot->droppedSamples > 0 ? ImVec4(1, 0.7f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
+                       "non-finite samples dropped: %llu",
+                       static_cast<unsigned long long>(snapshot->droppedSamples));
 }
 
 void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings) {

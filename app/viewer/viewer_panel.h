@@ -61,7 +61,7 @@ private:
     // `labelled`: the item has a label to the right of its frame, which is left out.
     void remember(const std::string& name, bool labelled = true);
     bool sideControls(const char* label, SideConfig& side);
-    void readouts(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
+    void readouts(const WorkerSnapshot* snapshot);
     void errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
 
     std::string message_;

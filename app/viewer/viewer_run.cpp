@@ -109,7 +109,8 @@ ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSe
                 beginOffscreenFrame(options.width, options.height, delta);
                 return true;
             },
-            [] { glFlush(); });
+            // Wait for the GPU (llvmpipe) so that frame times are what a display would show.
+            [] { glFinish(); });
         report.context = context->backendName();
         return report;
     }
