@@ -119,10 +119,13 @@ void Viewer::frame(const FrameTarget& target) {
     display.split = settings_.split && shown_ && shown_->sides.size() == 2;
     display.sampleScale = std::max(1.0f, shown_ ? static_cast<float>(shown_->spp) : 1.0f);
     updateImage(display);
-    target.bind();
-    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    if (image_) image_->blitTo(target);
+    if (image_) {
+        image_->blitTo(target);  // covers the whole target: no clear needed (a full-screen pass saved)
+    } else {
+        target.bind();
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     drawOverlays(target);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
