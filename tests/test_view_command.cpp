@@ -106,3 +106,23 @@ TEST_CASE("the windowed viewer under Xvfb shows the Cornell box and the panel") 
     CHECK(green > red * 6 / 5);  // the wall is still speckled: a margin, not a factor
     CHECK(lit > (boxLeft + kHeight - 400) * kHeight / 2 / 4);
 }
+
+TEST_CASE("view --reference measures RMSE: zero for the side that repeats the reference's render") {
+    // The batch renderer's image at the same camera, sampler, depth, seed and spp is the viewer's
+    // strata24 side sample for sample (a pixel's samples depend only on seed, pixel, pass, step),
+    // so that side's RMSE is 0 up to the EXR's float32 rounding, and the uniform side's is noise.
+    const auto dir = test::scratchDir("view-reference");
+    const auto reference = dir / "reference.exr";
+    const auto render = test::runStrata("render " + (test::sourceDir() / "assets/cornell/cornell.obj").string() +
+                                        " --width 48 --height 32 --spp 48 --sampler strata24 --out " +
+                                        reference.string());
+    REQUIRE_MESSAGE(render.exitCode == 0, render.err);
+    const auto view = test::runStrata("view --headless=osmesa --frames 1 --window 48 32 --target-spp 48 --json "
+                                      "--reference " + reference.string());
+    REQUIRE_MESSAGE(view.exitCode == 0, view.err);
+    const auto report = nlohmann::json::parse(view.out);
+    CHECK(report["error_against_reference"] == true);
+    CHECK(report["sides"][0]["sampler"] == "uniform");
+    CHECK(report["sides"][0]["error"].get<double>() > 1e-3);
+    CHECK(report["sides"][1]["error"].get<double>() < 1e-6);
+}
