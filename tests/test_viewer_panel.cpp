@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 #include <imgui.h>
 
@@ -115,4 +116,21 @@ TEST_CASE("a target spp set in the panel stops rendering there") {
     for (int i = 0; i < 5; ++i) h.frame();
     CHECK(h.viewer.shownSnapshot()->paths == paths);
     CHECK(h.viewer.shownSnapshot()->spp == 48);
+}
+
+TEST_CASE("a scene that fails to load leaves the old one rendering") {
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const auto dir = test::scratchDir("viewer-bad-scene");
+    const auto bad = dir / "bad.obj";
+    std::ofstream(bad) << "v 0 0 0\nf 1 2 3\n";  // indices out of range
+    h.viewer.openScene(bad);
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("bad.obj") != std::string::npos);
+    h.viewer.openScene(dir / "missing.obj");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }

@@ -43,6 +43,7 @@ public:
     PanelActions draw(ViewerSettings& settings, const WorkerSnapshot* snapshot);
 
     void setMessage(std::string message) { message_ = std::move(message); }
+    const std::string& message() const { return message_; }
     std::string scenePath() const { return scenePath_.data(); }
     std::string referencePath() const { return referencePath_.data(); }
     std::string outputStem() const { return outputStem_.data(); }
