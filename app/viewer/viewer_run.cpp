@@ -17,6 +17,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr auto kIdleAfter = std::chrono::seconds(1);
+
+// Whether this frame had user input (pointer motion, buttons, wheel, keys, typing).
+bool hadInput() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f || io.WantTextInput) {
+        return true;
+    }
+    for (bool down : io.MouseDown) {
+        if (down) return true;
+    }
+    for (bool down : io.KeysDown) {
+        if (down) return true;
+    }
+    return false;
+}
+
 bool finished(const ViewRunOptions& options, const ViewerSettings& settings, int frame,
               const WorkerSnapshot* shown) {
     if (options.frames <= 0 || frame < options.frames) return false;
@@ -31,7 +48,11 @@ template <typename BeginFrame, typename EndFrame>
 ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& target,
                    BeginFrame beginFrame, EndFrame endFrame) {
     ViewRunReport report;
-    const auto minFrame = std::chrono::duration<double>(1.0 / options.maxFramesPerSecond);
+    const auto activeFrame = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(1.0 / options.activeFramesPerSecond));
+    const auto idleFrame = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(1.0 / options.idleFramesPerSecond));
+    auto lastInput = Clock::now();
     const auto start = Clock::now();
     auto previous = start;
     for (int frame = 0;; ++frame) {
@@ -45,7 +66,8 @@ ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& t
         endFrame();
         report.frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - frameStart).count());
         if (last) break;
-        std::this_thread::sleep_until(frameStart + std::chrono::duration_cast<Clock::duration>(minFrame));
+        if (hadInput()) lastInput = Clock::now();
+        std::this_thread::sleep_until(frameStart + (Clock::now() - lastInput < kIdleAfter ? activeFrame : idleFrame));
     }
     report.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     report.last = viewer.shownSnapshot() ? std::make_shared<WorkerSnapshot>(*viewer.shownSnapshot()) : nullptr;

@@ -32,7 +32,11 @@ struct ViewRunOptions {
     int height = 720;
     int frames = 0;  // 0: until the window closes (windowed only)
     std::optional<std::filesystem::path> screenshot;
-    double maxFramesPerSecond = 60.0;
+    // Frame rate cap while the user interacts, and after a second without input: the UI thread's
+    // drawing (llvmpipe on a small machine) takes CPU from rendering, which needs it more while
+    // nobody touches anything.
+    double activeFramesPerSecond = 60.0;
+    double idleFramesPerSecond = 20.0;
 };
 
 struct ViewRunReport {
