@@ -10,6 +10,7 @@
 #include "render_command.h"
 #include "render_job.h"
 #include "samples_command.h"
+#include "view_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
     strata::addBenchCommand(app);
     strata::addRenderCommand(app);
     strata::addSamplesCommand(app);
+    strata::addViewCommand(app);
     // CLI11 reports a mistyped command only as "a subcommand is required"; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         try {

@@ -99,6 +99,19 @@ void writeImage(const std::filesystem::path& path, const Image& image, const Png
     });
 }
 
+void writeRgb8Png(const std::filesystem::path& path, int width, int height,
+                  const std::vector<uint8_t>& rgb) {
+    if (imageFormatOf(path) != ImageFormat::Png) throw Error(path.string() + ": must be a .png file");
+    if (width < 1 || height < 1 || rgb.size() != static_cast<size_t>(width) * height * 3) {
+        throw Error(path.string() + ": image size does not match its pixels");
+    }
+    writeAtomically(path, [&](const std::string& file) {
+        if (!stbi_write_png(file.c_str(), width, height, 3, rgb.data(), width * 3)) {
+            throw std::runtime_error("PNG encoder failed");
+        }
+    });
+}
+
 Image readExr(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
     try {

@@ -79,15 +79,17 @@ int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency();
 
 void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
                                      const std::vector<uint8_t>* skip) {
-    render(buffer, pass, 0, kPathsPerPass, skip);
+    render(buffer, pass, 0, kPathsPerPass, skip, nullptr);
 }
 
-void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step) {
-    render(buffer, pass, step, step + 1, nullptr);
+void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
+                                     const std::atomic<bool>* cancel) {
+    render(buffer, pass, step, step + 1, nullptr, cancel);
 }
 
 void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
-                                 int endStep, const std::vector<uint8_t>* skip) {
+                                 int endStep, const std::vector<uint8_t>* skip,
+                                 const std::atomic<bool>* cancel) {
     const int width = camera_.width();
     const int height = camera_.height();
     if (buffer.width() != width || buffer.height() != height) {
@@ -97,6 +99,7 @@ void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int 
         tbb::parallel_for(
             tbb::blocked_range2d<int>(0, height, kTileSize, 0, width, kTileSize),
             handedOff([&](const tbb::blocked_range2d<int>& tile) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 // Denormals are never needed for radiance; flushing them keeps every thread fast.
                 _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
                 _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);

@@ -40,8 +40,11 @@ public:
     // All 24 paths of pass `pass` for every pixel; closes the pass in the buffer. Pixels whose
     // entry in `skip` (if given, one per pixel) is non-zero are left alone: adaptive sampling.
     void renderPass(AccumulationBuffer& buffer, uint32_t pass, const std::vector<uint8_t>* skip = nullptr);
-    // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass.
-    void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step);
+    // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass. When `cancel` is
+    // given and becomes true, the tiles not yet started are skipped and the buffer is left partial
+    // (the viewer abandons it: a camera change must not wait for a whole step).
+    void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
+                    const std::atomic<bool>* cancel = nullptr);
 
     RenderCounters counters() const { return {paths_.load(), rays_.load()}; }
     const RenderSettings& settings() const { return settings_; }
@@ -49,7 +52,7 @@ public:
 
 private:
     void render(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep,
-                const std::vector<uint8_t>* skip);
+                const std::vector<uint8_t>* skip, const std::atomic<bool>* cancel);
 
     const Scene& scene_;
     const Camera& camera_;

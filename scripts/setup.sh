@@ -11,7 +11,7 @@ packages=(
   libopenexr-dev libstb-dev doctest-dev
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
-  xvfb xauth gnuplot-nox embree-tools clang libclang-rt-14-dev
+  python3-glad xvfb xauth gnuplot-nox embree-tools clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

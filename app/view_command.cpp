@@ -1,0 +1,152 @@
+#include "view_command.h"
+
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "error.h"
+#include "render_options.h"
+#include "viewer_run.h"
+
+namespace strata {
+namespace {
+
+struct ViewCommand {
+    RenderOptions render;
+    std::string headless;  // "" windowed; "auto", "egl" or "osmesa" offscreen
+    int frames = 0;
+    std::string screenshot;
+    std::string reference;
+    std::vector<int> window{1280, 720};
+    bool split = true;
+    int targetSpp = 0;
+    float scale = 1.0f;
+    float exposure = 0.0f;
+    std::string tonemap = "clamp";
+    bool json = false;
+
+    void run() const;
+};
+
+std::filesystem::path defaultScene() {
+    const std::filesystem::path cornell = std::filesystem::path(STRATA_ASSETS_DIR) / "cornell" / "cornell.obj";
+    if (!std::filesystem::is_regular_file(cornell)) {
+        throw Error("view: no scene given and the bundled " + cornell.string() +
+                    " is missing (the program was built from another source tree); pass SCENE.obj");
+    }
+    return cornell;
+}
+
+void ViewCommand::run() const {
+    if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (frames < 0) throw Error("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
+    const auto tonemapKind = parseTonemap(tonemap);
+    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
+        throw Error("--screenshot: must be a .png file");
+    }
+    if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
+
+    RenderOptions options = render;
+    if (options.scene.empty()) options.scene = defaultScene().string();
+    auto scene = std::make_shared<const LoadedScene>(options.loadScene());
+    const RenderSettings settings = render.renderSettings(*scene);
+    std::fprintf(stderr, "%s\n", describeScene(*scene).c_str());
+    std::shared_ptr<const Image> referenceImage;
+    if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
+
+    viewer::ViewerSettings viewerSettings;
+    viewerSettings.split = split;
+    viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
+    for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
+    viewerSettings.nextEventEstimation = settings.integrator.nextEventEstimation;
+    viewerSettings.seed = settings.seed;
+    viewerSettings.threads = settings.threads;
+    viewerSettings.targetSpp = targetSpp;
+    viewerSettings.resolutionScale = scale;
+    viewerSettings.display.exposure = exposure;
+    viewerSettings.display.tonemap = *tonemapKind;
+
+    viewer::ViewRunOptions run;
+    run.headless = !headless.empty();
+    if (run.headless) run.backend = viewer::parseOffscreenBackend(headless);
+    run.width = window.at(0);
+    run.height = window.at(1);
+    run.frames = frames;
+    if (!screenshot.empty()) run.screenshot = screenshot;
+    // The image size follows the window; --width/--height set the window when given.
+    if (render.width) {
+        if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
+        run.width = *render.width;
+    }
+    if (render.height) {
+        if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
+        run.height = *render.height;
+    }
+
+    const viewer::ViewRunReport report = viewer::runViewer(scene, viewerSettings, referenceImage, run);
+    if (!screenshot.empty()) std::fprintf(stderr, "wrote %s\n", screenshot.c_str());
+    if (!json) return;
+    const auto* last = report.last.get();
+    nlohmann::json sides = nlohmann::json::array();
+    if (last) {
+        for (size_t i = 0; i < last->sides.size(); ++i) {
+            const auto& side = last->sides[i];
+            const auto config = viewerSettings.sides().at(i);
+            sides.push_back({{"sampler", samplerName(config.sampler)},
+                             {"depth", config.depth},
+                             {"render_seconds", side.seconds},
+                             {"error", side.history.empty() ? nlohmann::json(nullptr)
+                                                            : nlohmann::json(side.history.back().error)}});
+        }
+    }
+    const double renderSeconds = last ? last->totalRenderSeconds : 0.0;
+    const nlohmann::json out{
+        {"scene", scene->objPath.string()},
+        {"context", report.context},
+        {"width", run.width},
+        {"height", run.height},
+        {"frames", report.frameSeconds.size()},
+        {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
+        {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
+        {"wall_seconds", report.wallSeconds},
+        {"spp", last ? last->spp : 0},
+        {"passes", last ? last->passes : 0},
+        {"paths", last ? last->totalPaths : 0},
+        {"render_seconds", renderSeconds},
+        {"msamples_per_second", renderSeconds > 0.0 && last ? last->totalPaths / renderSeconds * 1e-6 : 0.0},
+        {"msamples_per_wall_second", last ? last->totalPaths / report.wallSeconds * 1e-6 : 0.0},
+        {"error_against_reference", last && last->againstReference},
+        {"sides", sides},
+    };
+    std::printf("%s\n", out.dump().c_str());
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& app) {
+    auto command = std::make_shared<ViewCommand>();
+    CLI::App* sub = app.add_subcommand(
+        "view", "Interactive progressive viewer (bundled Cornell box when no scene is given)");
+    command->render.addTo(*sub, false);
+    sub->add_option("--headless", command->headless,
+                    "Run offscreen: egl (surfaceless Mesa) or osmesa; bare --headless tries both")
+        ->expected(0, 1)
+        ->default_str("auto");
+    sub->add_option("--frames", command->frames, "Stop after N UI frames (and --target-spp if given)");
+    sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
+    sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
+    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
+    sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
+        ->capture_default_str();
+    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+        ->capture_default_str();
+    sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
+    sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();
+    sub->add_flag("--json", command->json, "Print frame-time p50/p95 and throughput as JSON on stdout");
+    sub->callback([command] { command->run(); });
+}
+
+}  // namespace strata

@@ -1,0 +1,119 @@
+#include "display_pipeline.h"
+
+#include <string>
+
+#include "error.h"
+#include "shader_sources.h"
+
+namespace strata::viewer {
+namespace {
+
+GLuint compileShader(GLenum stage, const char* source, const char* name) {
+    const GLuint shader = glCreateShader(stage);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        std::string log(4096, '\0');
+        glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+        glDeleteShader(shader);
+        throw Error(std::string("shaders/") + name + ": does not compile: " + log.c_str());
+    }
+    return shader;
+}
+
+GLuint makeTexture() {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    // Nearest: a texel is a pixel's estimate; blending neighbours would blend sample counts too.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, empty);
+    return texture;
+}
+
+}  // namespace
+
+DisplayPipeline::DisplayPipeline() {
+    const GLuint vertex = compileShader(GL_VERTEX_SHADER, kDisplayVertexShader, "display.vert");
+    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, kDisplayFragmentShader, "display.frag");
+    program_ = glCreateProgram();
+    glAttachShader(program_, vertex);
+    glAttachShader(program_, fragment);
+    glLinkProgram(program_);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        std::string log(4096, '\0');
+        glGetProgramInfoLog(program_, static_cast<GLsizei>(log.size()), nullptr, log.data());
+        glDeleteProgram(program_);
+        throw Error(std::string("shaders/display: does not link: ") + log.c_str());
+    }
+    glGenVertexArrays(1, &vertexArray_);  // core profile draws need one, even without attributes
+    for (int side = 0; side < 2; ++side) {
+        imageTextures_[side] = makeTexture();
+        errorTextures_[side] = makeTexture();
+    }
+}
+
+DisplayPipeline::~DisplayPipeline() {
+    glDeleteTextures(2, imageTextures_.data());
+    glDeleteTextures(2, errorTextures_.data());
+    glDeleteVertexArrays(1, &vertexArray_);
+    glDeleteProgram(program_);
+}
+
+void DisplayPipeline::upload(int side, const DisplayImage& image) {
+    if (image.width < 1 || image.height < 1) return;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, imageTextures_.at(side));
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
+                 image.meanAndCount.data());
+    glBindTexture(GL_TEXTURE_2D, errorTextures_.at(side));
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, image.width, image.height, 0, GL_RED, GL_FLOAT,
+                 image.relativeError.data());
+}
+
+void DisplayPipeline::draw(const DisplaySettings& settings, const Viewport& viewport) const {
+    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself, like renderer/tonemap.cpp
+    glUseProgram(program_);
+    for (int side = 0; side < 2; ++side) {
+        glActiveTexture(GL_TEXTURE0 + 2 * side);
+        glBindTexture(GL_TEXTURE_2D, imageTextures_[side]);
+        glActiveTexture(GL_TEXTURE0 + 2 * side + 1);
+        glBindTexture(GL_TEXTURE_2D, errorTextures_[side]);
+    }
+    const GLint images[2] = {0, 2};
+    const GLint errors[2] = {1, 3};
+    glUniform1iv(glGetUniformLocation(program_, "uImage"), 2, images);
+    glUniform1iv(glGetUniformLocation(program_, "uError"), 2, errors);
+    glUniform2f(glGetUniformLocation(program_, "uViewportOrigin"), static_cast<float>(viewport.x),
+                static_cast<float>(viewport.y));
+    glUniform2f(glGetUniformLocation(program_, "uViewportSize"), static_cast<float>(viewport.width),
+                static_cast<float>(viewport.height));
+    glUniform1i(glGetUniformLocation(program_, "uSplit"), settings.split ? 1 : 0);
+    glUniform1f(glGetUniformLocation(program_, "uDivider"), settings.divider);
+    glUniform1i(glGetUniformLocation(program_, "uView"), static_cast<int>(settings.view));
+    glUniform1i(glGetUniformLocation(program_, "uTonemap"), static_cast<int>(settings.tonemap));
+    glUniform1f(glGetUniformLocation(program_, "uExposure"), settings.exposure);
+    glUniform1f(glGetUniformLocation(program_, "uErrorScale"), settings.errorScale);
+    glUniform1f(glGetUniformLocation(program_, "uSampleScale"), settings.sampleScale);
+    glBindVertexArray(vertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace strata::viewer

@@ -1,0 +1,52 @@
+#pragma once
+// The display of the accumulation buffers: shaders/display.{vert,frag} drawn over a viewport from
+// float textures of up to two images (the split view's sides). Needs a current OpenGL 3.3 context.
+#include <array>
+
+#include "display_image.h"
+#include "gl_loader.h"
+#include "tonemap.h"
+
+namespace strata::viewer {
+
+enum class DisplayView { Colour, RelativeError, SampleCount };
+
+struct DisplaySettings {
+    DisplayView view = DisplayView::Colour;
+    Tonemap tonemap = Tonemap::Clamp;
+    float exposure = 0.0f;     // stops
+    bool split = false;        // left of `divider` side 0, right of it side 1
+    float divider = 0.5f;      // fraction of the viewport width
+    float errorScale = 0.25f;  // relative error at the top of the false-colour ramp
+    float sampleScale = 1.0f;  // sample count at the top of the ramp
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+struct Viewport {
+    int x = 0;  // lower-left corner, window pixels (OpenGL convention)
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+
+class DisplayPipeline {
+public:
+    // Compiles the shaders; throws strata::Error with the compiler's log on failure.
+    DisplayPipeline();
+    ~DisplayPipeline();
+    DisplayPipeline(const DisplayPipeline&) = delete;
+    DisplayPipeline& operator=(const DisplayPipeline&) = delete;
+
+    // Uploads side 0 or 1's image (resizing its textures when the size changed).
+    void upload(int side, const DisplayImage& image);
+    // Draws into the bound framebuffer's `viewport`.
+    void draw(const DisplaySettings& settings, const Viewport& viewport) const;
+
+private:
+    GLuint program_ = 0;
+    GLuint vertexArray_ = 0;
+    std::array<GLuint, 2> imageTextures_{};
+    std::array<GLuint, 2> errorTextures_{};
+};
+
+}  // namespace strata::viewer

@@ -1,0 +1,207 @@
+#include "render_worker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "accumulation_buffer.h"
+#include "progressive_renderer.h"
+
+namespace strata::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool samePose(const CameraPose& a, const CameraPose& b) {
+    return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
+           a.fovYDegrees == b.fovYDegrees;
+}
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
+    return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
+           a.height != b.height || a.sides != b.sides ||
+           a.nextEventEstimation != b.nextEventEstimation || a.seed != b.seed ||
+           a.threads != b.threads || a.preview != b.preview || a.reference != b.reference;
+}
+
+struct RenderWorker::Job {
+    struct Side {
+        AccumulationBuffer buffer;
+        std::unique_ptr<ProgressiveRenderer> renderer;
+        bool stratified;
+        double seconds = 0.0;
+        std::vector<ErrorSample> history;
+    };
+    uint64_t generation = 0;
+    std::shared_ptr<const LoadedScene> scene;  // keeps what the renderers reference alive
+    std::unique_ptr<Camera> camera;
+    std::shared_ptr<const Image> reference;
+    std::vector<Side> sides;
+    uint32_t pass = 0;
+    int step = 0;
+    bool preview = false;
+    Clock::time_point start = Clock::now();
+    std::string error;
+
+    uint32_t spp() const { return pass * kPathsPerPass + static_cast<uint32_t>(step); }
+    bool finished(const WorkerConfig& config) const {
+        return !error.empty() || sides.empty() || config.paused ||
+               (config.targetSpp > 0 && spp() >= config.targetSpp) || (preview && spp() >= 1);
+    }
+};
+
+RenderWorker::RenderWorker() : thread_([this] { run(); }) {}
+
+RenderWorker::~RenderWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+void RenderWorker::configure(const WorkerConfig& config, bool restart) {
+    {
+        std::lock_guard lock(mutex_);
+        if (restart || version_ == 0 || needsRestart(config_, config)) {
+            ++generation_;
+            cancel_ = true;
+        }
+        config_ = config;
+        ++version_;
+    }
+    wake_.notify_all();
+}
+
+std::shared_ptr<const WorkerSnapshot> RenderWorker::latest() {
+    std::lock_guard lock(snapshotMutex_);
+    taken_ = true;
+    return latest_;
+}
+
+void RenderWorker::run() {
+    std::unique_ptr<Job> job;
+    uint64_t seenVersion = 0;
+    bool idle = false;
+    for (;;) {
+        WorkerConfig config;
+        uint64_t generation = 0;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stop_ || (version_ != 0 && (!idle || version_ != seenVersion)); });
+            if (stop_) return;
+            seenVersion = version_;
+            config = config_;
+            generation = generation_;
+            cancel_ = false;  // under the lock: a restart after this point cancels the next step
+        }
+        if (!job || job->generation != generation) {
+            job = std::make_unique<Job>();
+            job->generation = generation;
+            job->scene = config.scene;
+            job->reference = config.reference;
+            job->preview = config.preview;
+            try {
+                const int divisor = config.preview ? kPreviewDivisor : 1;
+                job->camera = std::make_unique<Camera>(config.pose, std::max(1, config.width / divisor),
+                                                       std::max(1, config.height / divisor));
+                for (const SideConfig& side : config.sides) {
+                    RenderSettings settings;
+                    settings.integrator.depth = side.depth;
+                    settings.integrator.sampler = side.sampler;
+                    settings.integrator.nextEventEstimation = config.nextEventEstimation;
+                    settings.seed = config.seed;
+                    settings.threads = config.threads;
+                    job->sides.push_back(Job::Side{
+                        AccumulationBuffer(job->camera->width(), job->camera->height()),
+                        std::make_unique<ProgressiveRenderer>(config.scene->scene, *job->camera, settings),
+                        side.sampler == SamplerKind::Strata24, 0.0, {}});
+                }
+            } catch (const std::exception& e) {
+                job->sides.clear();
+                job->error = e.what();
+            }
+        }
+        idle = job->finished(config);
+        if (idle) {
+            publish(*job, true);
+            continue;
+        }
+        if (renderStep(*job)) publish(*job, false);
+    }
+}
+
+bool RenderWorker::renderStep(Job& job) {
+    for (auto& side : job.sides) {
+        const auto start = Clock::now();
+        const uint64_t before = side.renderer->counters().paths;
+        side.renderer->renderStep(side.buffer, job.pass, job.step, &cancel_);
+        const double seconds = secondsSince(start);
+        side.seconds += seconds;
+        totalRenderSeconds_ += seconds;
+        totalPaths_ += side.renderer->counters().paths - before;
+        if (cancel_) return false;
+    }
+    if (++job.step < kPathsPerPass) return true;
+    job.step = 0;
+    ++job.pass;
+    // Noise is measured at complete passes; strata24's estimate needs two pass means.
+    if (job.pass < 2) return true;
+    for (auto& side : job.sides) {
+        const AccumulationBuffer& buffer = side.buffer;
+        const bool againstReference = job.reference && job.reference->width == buffer.width() &&
+                                      job.reference->height == buffer.height();
+        double squares = 0.0;
+        for (size_t p = 0; p < buffer.pixelCount(); ++p) {
+            const double e = againstReference
+                                 ? luminance(buffer.mean(p)) - luminance(glm::dvec3(job.reference->pixels[p]))
+                                 : pixelStandardError(buffer, p, side.stratified);
+            squares += e * e;
+        }
+        side.history.push_back({static_cast<double>(job.spp()), side.seconds,
+                                std::sqrt(squares / static_cast<double>(buffer.pixelCount()))});
+    }
+    return true;
+}
+
+void RenderWorker::publish(const Job& job, bool idle) {
+    {
+        std::lock_guard lock(snapshotMutex_);
+        // Build a new image only when the UI has taken the last one, a pass just closed, or the
+        // worker is about to rest (its last state must be shown).
+        const bool passClosed = job.step == 0;
+        if (!taken_ && !passClosed && !idle) return;
+    }
+    auto snapshot = std::make_shared<WorkerSnapshot>();
+    snapshot->generation = job.generation;
+    snapshot->preview = job.preview;
+    snapshot->idle = idle;
+    snapshot->againstReference = job.reference && job.camera && job.reference->width == job.camera->width() &&
+                                 job.reference->height == job.camera->height();
+    snapshot->spp = job.spp();
+    snapshot->passes = job.pass;
+    snapshot->elapsedSeconds = secondsSince(job.start);
+    snapshot->totalPaths = totalPaths_;
+    snapshot->totalRenderSeconds = totalRenderSeconds_;
+    snapshot->error = job.error;
+    for (const auto& side : job.sides) {
+        const RenderCounters counters = side.renderer->counters();
+        snapshot->paths += counters.paths;
+        snapshot->rays += counters.rays;
+        snapshot->droppedSamples += side.buffer.droppedSamples();
+        snapshot->sides.push_back({DisplayImage::fromBuffer(side.buffer, side.stratified), side.history,
+                                   side.seconds});
+    }
+    std::lock_guard lock(snapshotMutex_);
+    latest_ = std::move(snapshot);
+    taken_ = false;
+}
+
+}  // namespace strata::viewer

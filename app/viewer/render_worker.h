@@ -1,0 +1,123 @@
+#pragma once
+// The viewer's render thread. It drives ProgressiveRenderer::renderStep (a pass = 24 steps of one
+// path per pixel) for one or two configurations of the same camera (the split view's sides, step
+// for step, so both always hold equal samples) and publishes snapshots for the UI thread, which
+// only ever takes the latest one under a short lock: it never waits for a step or a pass.
+// Any change of scene, camera or setting restarts accumulation after the step in flight; a target
+// spp or a pause blocks the thread on a condition variable (no CPU) until something changes.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "camera.h"
+#include "direction_sampler.h"
+#include "display_image.h"
+#include "image_io.h"
+#include "scene_loader.h"
+
+namespace strata::viewer {
+
+struct SideConfig {
+    SamplerKind sampler = SamplerKind::Strata24;
+    int depth = 5;
+    bool operator==(const SideConfig&) const = default;
+};
+
+struct WorkerConfig {
+    std::shared_ptr<const LoadedScene> scene;
+    CameraPose pose;
+    int width = 0;  // full-resolution image
+    int height = 0;
+    std::vector<SideConfig> sides;  // one, or two for the split view
+    bool nextEventEstimation = false;
+    uint64_t seed = 0;
+    int threads = 0;
+    // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.
+    bool preview = false;
+    // Reference radiance for RMSE (same size as the image), else the standard error is shown.
+    std::shared_ptr<const Image> reference;
+    // These two never restart accumulation.
+    uint32_t targetSpp = 0;  // 0: no limit
+    bool paused = false;
+};
+
+inline constexpr int kPreviewDivisor = 4;
+
+// Whether going from `a` to `b` restarts accumulation (anything but targetSpp / paused changed).
+bool needsRestart(const WorkerConfig& a, const WorkerConfig& b);
+
+// One point of a side's error curve, taken at a completed pass.
+struct ErrorSample {
+    double spp;
+    double seconds;  // this side's render time
+    double error;    // RMSE against the reference, else root mean square standard error
+};
+
+struct SideSnapshot {
+    DisplayImage image;
+    std::vector<ErrorSample> history;
+    double seconds = 0.0;
+};
+
+struct WorkerSnapshot {
+    uint64_t generation = 0;  // bumps on every restart
+    bool preview = false;
+    bool idle = false;        // target reached, paused, or preview done
+    bool againstReference = false;
+    uint32_t spp = 0;         // per pixel, per side
+    uint32_t passes = 0;      // completed passes per side
+    double elapsedSeconds = 0.0;
+    uint64_t paths = 0;       // this generation, all sides
+    uint64_t rays = 0;
+    uint64_t droppedSamples = 0;
+    // Over the worker's life, for throughput figures.
+    uint64_t totalPaths = 0;
+    double totalRenderSeconds = 0.0;
+    std::vector<SideSnapshot> sides;
+    std::string error;  // a failure of this configuration (e.g. a degenerate camera)
+};
+
+class RenderWorker {
+public:
+    RenderWorker();
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    // Takes the new configuration; restarts accumulation when `restart` or when anything but
+    // targetSpp / paused changed.
+    void configure(const WorkerConfig& config, bool restart = false);
+    // The latest snapshot (null before the first); never waits for rendering.
+    std::shared_ptr<const WorkerSnapshot> latest();
+
+private:
+    struct Job;
+    void run();
+    // False when cancelled: the job is then stale and must not be published.
+    bool renderStep(Job& job);
+    void publish(const Job& job, bool idle);
+
+    std::mutex mutex_;  // guards config_, version_, generation_, stop_
+    std::condition_variable wake_;
+    WorkerConfig config_;
+    uint64_t version_ = 0;
+    uint64_t generation_ = 0;
+    bool stop_ = false;
+    // Set with a restart so that the step in flight stops at its next tile.
+    std::atomic<bool> cancel_{false};
+
+    std::mutex snapshotMutex_;  // guards latest_, taken_
+    std::shared_ptr<const WorkerSnapshot> latest_;
+    bool taken_ = true;
+
+    uint64_t totalPaths_ = 0;  // worker thread only
+    double totalRenderSeconds_ = 0.0;
+    std::thread thread_;
+};
+
+}  // namespace strata::viewer

@@ -1,0 +1,65 @@
+#pragma once
+// The viewer's UI thread: one call of frame() takes the latest render snapshot, draws the panel,
+// applies input (camera, divider, settings) by reconfiguring the render worker, and draws the
+// display and the panel into a frame target. The same code runs windowed and offscreen.
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "camera_controller.h"
+#include "display_pipeline.h"
+#include "frame_target.h"
+#include "render_worker.h"
+#include "viewer_panel.h"
+
+namespace strata::viewer {
+
+class Viewer {
+public:
+    // Needs a current OpenGL context with the ImGui context and its OpenGL 3 backend initialised.
+    Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+           std::shared_ptr<const Image> reference);
+
+    // One UI frame. The caller has started the ImGui platform frame (io.DisplaySize, input).
+    void frame(const FrameTarget& target);
+
+    // Loads a scene; on failure the old one stays and the panel shows why.
+    void openScene(const std::filesystem::path& objPath);
+    void loadReference(const std::filesystem::path& exrPath);
+
+    ViewerSettings& settings() { return settings_; }
+    ViewerPanel& panel() { return panel_; }
+    const WorkerConfig& workerConfig() const { return configured_; }
+    // The snapshot the last frame displayed (null before the first).
+    const WorkerSnapshot* shownSnapshot() const { return shown_.get(); }
+
+private:
+    void handleDivider(const ImGuiIO& io, const FrameTarget& target);
+    void drawOverlays(const FrameTarget& target);
+    void applyActions(const PanelActions& actions);
+    // The displayed image at its render size, redrawn only when the snapshot or the display
+    // settings change: the display shader runs over the image's pixels, not the window's, and
+    // not every frame (llvmpipe's cost per frame is what keeps the UI responsive).
+    void updateImage(const DisplaySettings& display);
+    void savePng(const std::filesystem::path& path);
+    void saveExr(const std::filesystem::path& stem);
+
+    std::shared_ptr<const LoadedScene> scene_;
+    std::shared_ptr<const Image> reference_;
+    ViewerSettings settings_;
+    ViewerPanel panel_;
+    CameraController camera_;
+    DisplayPipeline pipeline_;
+    std::shared_ptr<const WorkerSnapshot> shown_;
+    std::optional<FrameTarget> image_;
+    const WorkerSnapshot* imageSnapshot_ = nullptr;
+    DisplaySettings imageSettings_;
+    WorkerConfig configured_;
+    bool everConfigured_ = false;
+    bool draggingDivider_ = false;
+    std::chrono::steady_clock::time_point lastMotion_{};
+    RenderWorker worker_;  // last: its thread stops before the rest goes
+};
+
+}  // namespace strata::viewer

@@ -1,0 +1,178 @@
+#include "viewer_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "error_plot.h"
+#include "progressive_renderer.h"
+
+namespace strata::viewer {
+namespace {
+
+// Every sampler the renderer knows, from its "a|b|..." list, so new ones appear in the combo.
+std::vector<SamplerKind> allSamplers() {
+    std::vector<SamplerKind> kinds;
+    const std::string names = samplerNames();
+    for (size_t begin = 0; begin <= names.size();) {
+        const size_t end = std::min(names.find('|', begin), names.size());
+        if (const auto kind = parseSamplerKind(names.substr(begin, end - begin))) kinds.push_back(*kind);
+        begin = end + 1;
+    }
+    return kinds;
+}
+constexpr const char* kViews[] = {"colour", "relative error", "sample count"};
+constexpr const char* kTonemaps[] = {"clamp", "reinhard", "aces"};
+constexpr int kMaxDepth = 64;
+
+std::string sideLabel(const SideConfig& side) {
+    return std::string(samplerName(side.sampler)) + ", K=" + std::to_string(side.depth);
+}
+
+}  // namespace
+
+std::vector<SideConfig> ViewerSettings::sides() const {
+    if (split) return {halves[0], halves[1]};
+    return {single};
+}
+
+void ViewerPanel::remember(const std::string& name, bool labelled) {
+    Rect rect{ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+    if (labelled) rect.max.x = rect.min.x + ImGui::CalcItemWidth();
+    controls_[name] = rect;
+}
+
+void ViewerPanel::setScenePath(const std::string& path) {
+    std::snprintf(scenePath_.data(), scenePath_.size(), "%s", path.c_str());
+}
+
+void ViewerPanel::setReferencePath(const std::string& path) {
+    std::snprintf(referencePath_.data(), referencePath_.size(), "%s", path.c_str());
+}
+
+bool ViewerPanel::sideControls(const char* label, SideConfig& side) {
+    bool changed = false;
+    const std::string samplerLabel = std::string(label) + "sampler";
+    const std::string depthLabel = std::string(label) + "depth K";
+    const std::string current(samplerName(side.sampler));
+    const bool open = ImGui::BeginCombo(samplerLabel.c_str(), current.c_str());
+    remember(samplerLabel);
+    if (open) {
+        for (SamplerKind kind : allSamplers()) {
+            const std::string name(samplerName(kind));
+            if (ImGui::Selectable(name.c_str(), kind == side.sampler)) {
+                changed |= kind != side.sampler;
+                side.sampler = kind;
+            }
+            remember(samplerLabel + "/" + name, false);
+        }
+        ImGui::EndCombo();
+    }
+    changed |= ImGui::SliderInt(depthLabel.c_str(), &side.depth, 0, kMaxDepth);
+    remember(depthLabel);
+    return changed;
+}
+
+PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot) {
+    PanelActions actions;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Strata");
+    ImGui::PushItemWidth(190.0f);
+    readouts(snapshot);
+
+    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("split view", &settings.split);
+        remember("split view", false);
+        if (settings.split) {
+            sideControls("left ", settings.halves[0]);
+            sideControls("right ", settings.halves[1]);
+        } else {
+            sideControls("", settings.single);
+        }
+        ImGui::Checkbox("next-event estimation", &settings.nextEventEstimation);
+        int seed = static_cast<int>(settings.seed);
+        if (ImGui::InputInt("seed", &seed)) settings.seed = static_cast<uint64_t>(std::max(seed, 0));
+        ImGui::SliderInt("threads (0: all)", &settings.threads, 0, 64);
+        ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.05f, 1.0f, "%.3f");
+        ImGui::InputInt("target spp", &settings.targetSpp, kPathsPerPass, 10 * kPathsPerPass);
+        remember("target spp");
+        settings.targetSpp = std::max(settings.targetSpp, 0);
+        ImGui::Checkbox("paused", &settings.paused);
+        ImGui::SameLine();
+        actions.reset = ImGui::Button("reset");
+    }
+    if (snapshot && settings.split && ImGui::CollapsingHeader("Noise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        errorPlots(*snapshot, settings);
+    }
+    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
+        int view = static_cast<int>(settings.display.view);
+        ImGui::Combo("view", &view, kViews, IM_ARRAYSIZE(kViews));
+        settings.display.view = static_cast<DisplayView>(view);
+        int tonemap = static_cast<int>(settings.display.tonemap);
+        ImGui::Combo("tonemap", &tonemap, kTonemaps, IM_ARRAYSIZE(kTonemaps));
+        settings.display.tonemap = static_cast<Tonemap>(tonemap);
+        ImGui::SliderFloat("exposure", &settings.display.exposure, -8.0f, 8.0f, "%.1f stops");
+        if (settings.display.view == DisplayView::RelativeError) {
+            ImGui::SliderFloat("error scale", &settings.display.errorScale, 0.001f, 1.0f, "%.3f",
+                               ImGuiSliderFlags_Logarithmic);
+        }
+    }
+    if (ImGui::CollapsingHeader("Files")) {
+        ImGui::InputText("scene .obj", scenePath_.data(), scenePath_.size());
+        actions.openScene = ImGui::Button("open scene");
+        ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
+        actions.loadReference = ImGui::Button("load reference");
+        ImGui::InputText("save as", outputStem_.data(), outputStem_.size());
+        actions.savePng = ImGui::Button("save PNG");
+        ImGui::SameLine();
+        actions.saveExr = ImGui::Button("save EXR");
+    }
+    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return actions;
+}
+
+void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {
+    // Always three lines, so that the controls below never move under the pointer.
+    if (!snapshot || !snapshot->error.empty()) {
+        if (snapshot) {
+            ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", snapshot->error.c_str());
+        } else {
+            ImGui::TextUnformatted("starting");
+        }
+        ImGui::NewLine();
+        ImGui::NewLine();
+        return;
+    }
+    const double seconds = std::max(snapshot->elapsedSeconds, 1e-9);
+    ImGui::Text("%s  spp %u  passes %u  %.1f s",
+                snapshot->preview ? "preview" : (snapshot->idle ? "done" : "rendering"), snapshot->spp,
+                snapshot->passes, snapshot->elapsedSeconds);
+    ImGui::Text("%.2f Msamples/s  %.2f Mrays/s", snapshot->paths / seconds * 1e-6,
+                snapshot->rays / seconds * 1e-6);
+    ImGui::TextColored(snapshot->droppedSamples > 0 ? ImVec4(1, 0.7f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
+                       "non-finite samples dropped: %llu",
+                       static_cast<unsigned long long>(snapshot->droppedSamples));
+}
+
+void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings) {
+    if (snapshot.sides.size() != 2) return;
+    ImGui::Text("%s", snapshot.againstReference ? "RMSE against the reference (luminance)"
+                                               : "standard error of the mean (luminance, RMS)");
+    std::vector<ErrorSeries> series;
+    for (int side = 0; side < 2; ++side) {
+        series.push_back({sideLabel(settings.halves[side]), kSideColours[side], &snapshot.sides[side].history});
+    }
+    const auto& left = snapshot.sides[0].history;
+    const auto& right = snapshot.sides[1].history;
+    if (!left.empty() && !right.empty() && right.back().error > 0.0) {
+        const double ratio = left.back().error / right.back().error;
+        ImGui::Text("error left / right = %.3f  (variance ratio %.2f)", ratio, ratio * ratio);
+    }
+    drawErrorPlot("##error_vs_spp", ErrorAxis::Spp, series, 100.0f);
+    drawErrorPlot("##error_vs_seconds", ErrorAxis::Seconds, series, 100.0f);
+}
+
+}  // namespace strata::viewer

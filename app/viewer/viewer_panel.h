@@ -1,0 +1,78 @@
+#pragma once
+// The viewer's Dear ImGui panel: every setting the user can change, the live readouts, the error
+// plots of the split view and the file actions. It edits ViewerSettings and reports the buttons
+// pressed; the Viewer applies them.
+#include <array>
+#include <map>
+#include <string>
+#include <imgui.h>
+
+#include "display_pipeline.h"
+#include "render_worker.h"
+
+namespace strata::viewer {
+
+struct ViewerSettings {
+    bool split = true;
+    SideConfig single{SamplerKind::Strata24, 5};                    // the one-image view
+    std::array<SideConfig, 2> halves{SideConfig{SamplerKind::Uniform, 5},
+                                     SideConfig{SamplerKind::Strata24, 5}};  // split: left, right
+    bool nextEventEstimation = false;
+    uint64_t seed = 0;
+    int threads = 0;
+    float resolutionScale = 1.0f;
+    int targetSpp = 0;  // 0: no limit
+    bool paused = false;
+    DisplaySettings display;
+
+    // The sides the worker renders in the current mode.
+    std::vector<SideConfig> sides() const;
+};
+
+struct PanelActions {
+    bool reset = false;
+    bool savePng = false;
+    bool saveExr = false;
+    bool openScene = false;
+    bool loadReference = false;
+};
+
+class ViewerPanel {
+public:
+    // Draws the panel for this frame; `snapshot` may be null before the first render.
+    PanelActions draw(ViewerSettings& settings, const WorkerSnapshot* snapshot);
+
+    void setMessage(std::string message) { message_ = std::move(message); }
+    const std::string& message() const { return message_; }
+    std::string scenePath() const { return scenePath_.data(); }
+    std::string referencePath() const { return referencePath_.data(); }
+    std::string outputStem() const { return outputStem_.data(); }
+    void setScenePath(const std::string& path);
+    void setReferencePath(const std::string& path);
+
+    // Screen rectangle of each named control as last drawn, without its label (combo items as
+    // "combo label/item"), so that scripted input (the tests) can click it.
+    struct Rect {
+        ImVec2 min, max;
+        ImVec2 centre() const { return ImVec2(0.5f * (min.x + max.x), 0.5f * (min.y + max.y)); }
+    };
+    const std::map<std::string, Rect>& controls() const { return controls_; }
+
+private:
+    // `labelled`: the item has a label to the right of its frame, which is left out.
+    void remember(const std::string& name, bool labelled = true);
+    bool sideControls(const char* label, SideConfig& side);
+    void readouts(const WorkerSnapshot* snapshot);
+    void errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
+
+    std::string message_;
+    std::array<char, 1024> scenePath_{};
+    std::array<char, 1024> referencePath_{};
+    std::array<char, 1024> outputStem_{'s', 't', 'r', 'a', 't', 'a'};
+    std::map<std::string, Rect> controls_;
+};
+
+// Colours of the split view's two sides, shared by the labels and the plots.
+inline constexpr ImU32 kSideColours[2] = {IM_COL32(255, 140, 60, 255), IM_COL32(90, 200, 255, 255)};
+
+}  // namespace strata::viewer

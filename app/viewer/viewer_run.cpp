@@ -1,0 +1,171 @@
+#include "viewer_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+#define GLFW_INCLUDE_NONE  // key codes only; OpenGL comes from glad
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include "error.h"
+#include "glfw_window.h"
+
+namespace strata::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr auto kIdleAfter = std::chrono::seconds(1);
+
+// Whether this frame had user input (pointer motion, buttons, wheel, keys, typing).
+bool hadInput() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f || io.WantTextInput) {
+        return true;
+    }
+    for (bool down : io.MouseDown) {
+        if (down) return true;
+    }
+    for (bool down : io.KeysDown) {
+        if (down) return true;
+    }
+    return false;
+}
+
+bool finished(const ViewRunOptions& options, const ViewerSettings& settings, int frame,
+              const WorkerSnapshot* shown) {
+    if (options.frames <= 0 || frame < options.frames) return false;
+    if (settings.targetSpp <= 0) return true;
+    // Wait for the target, unless rendering cannot get there (a failed configuration).
+    return shown && (!shown->error.empty() ||
+                     (shown->idle && !shown->preview && shown->spp >= static_cast<uint32_t>(settings.targetSpp)));
+}
+
+// The frame loop shared by both contexts: `beginFrame` does the platform part, `endFrame` presents.
+template <typename BeginFrame, typename EndFrame>
+ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& target,
+                   BeginFrame beginFrame, EndFrame endFrame) {
+    ViewRunReport report;
+    const auto activeFrame = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(1.0 / options.activeFramesPerSecond));
+    const auto idleFrame = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(1.0 / options.idleFramesPerSecond));
+    auto lastInput = Clock::now();
+    const auto start = Clock::now();
+    auto previous = start;
+    for (int frame = 0;; ++frame) {
+        const auto frameStart = Clock::now();
+        const float delta = std::max(1e-4f, std::chrono::duration<float>(frameStart - previous).count());
+        previous = frameStart;
+        if (!beginFrame(delta)) break;
+        viewer.frame(target);
+        const bool last = finished(options, viewer.settings(), frame + 1, viewer.shownSnapshot());
+        if (last && options.screenshot) target.writePng(*options.screenshot);
+        endFrame();
+        report.frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - frameStart).count());
+        if (last) break;
+        if (hadInput()) lastInput = Clock::now();
+        std::this_thread::sleep_until(frameStart + (Clock::now() - lastInput < kIdleAfter ? activeFrame : idleFrame));
+    }
+    report.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    report.last = viewer.shownSnapshot() ? std::make_shared<WorkerSnapshot>(*viewer.shownSnapshot()) : nullptr;
+    return report;
+}
+
+}  // namespace
+
+ImGuiSession::ImGuiSession() {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+        ImGui::DestroyContext();
+        throw Error("OpenGL: the ImGui OpenGL 3 renderer cannot start");
+    }
+}
+
+ImGuiSession::~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void beginOffscreenFrame(int width, int height, float deltaSeconds) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.BackendPlatformName == nullptr) {
+        io.BackendPlatformName = "strata_offscreen";
+        // The key map of the GLFW backend, so that scripted keys mean the same as real ones.
+        const std::pair<ImGuiKey_, int> keys[] = {
+            {ImGuiKey_Tab, GLFW_KEY_TAB},         {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},
+            {ImGuiKey_RightArrow, GLFW_KEY_RIGHT}, {ImGuiKey_UpArrow, GLFW_KEY_UP},
+            {ImGuiKey_DownArrow, GLFW_KEY_DOWN},   {ImGuiKey_Home, GLFW_KEY_HOME},
+            {ImGuiKey_End, GLFW_KEY_END},         {ImGuiKey_Delete, GLFW_KEY_DELETE},
+            {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE}, {ImGuiKey_Enter, GLFW_KEY_ENTER},
+            {ImGuiKey_Escape, GLFW_KEY_ESCAPE},   {ImGuiKey_A, GLFW_KEY_A},
+            {ImGuiKey_C, GLFW_KEY_C},             {ImGuiKey_V, GLFW_KEY_V},
+            {ImGuiKey_X, GLFW_KEY_X},             {ImGuiKey_Y, GLFW_KEY_Y},
+            {ImGuiKey_Z, GLFW_KEY_Z}};
+        for (const auto& [key, code] : keys) io.KeyMap[key] = code;
+    }
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+    io.DeltaTime = deltaSeconds;
+}
+
+ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+                        std::shared_ptr<const Image> reference, const ViewRunOptions& options) {
+    if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384) {
+        throw Error("--window: size must be in 16..16384");
+    }
+    if (options.headless) {
+        if (options.frames <= 0) throw Error("--headless needs --frames N (N > 0)");
+        const auto context = OffscreenContext::create(options.backend);
+        FrameTarget target = FrameTarget::offscreen(options.width, options.height);
+        ImGuiSession imgui;
+        Viewer viewer(std::move(scene), settings, std::move(reference));
+        ViewRunReport report = loop(
+            viewer, options, target,
+            [&](float delta) {
+                beginOffscreenFrame(options.width, options.height, delta);
+                return true;
+            },
+            // Wait for the GPU (llvmpipe) so that frame times are what a display would show.
+            [] { glFinish(); });
+        report.context = context->backendName();
+        return report;
+    }
+    GlfwWindow window(options.width, options.height, "Strata");
+    ImGuiSession imgui;
+    window.initImGui();
+    int width = 0, height = 0;
+    window.framebufferSize(width, height);
+    FrameTarget target = FrameTarget::defaultFramebuffer(width, height);
+    ViewRunReport report;
+    {
+        Viewer viewer(std::move(scene), settings, std::move(reference));
+        report = loop(
+            viewer, options, target,
+            [&](float) {
+                window.beginFrame();
+                for (const auto& path : window.takeDroppedPaths()) viewer.openScene(path);
+                window.framebufferSize(width, height);
+                target.resize(std::max(width, 1), std::max(height, 1));
+                return !window.shouldClose();
+            },
+            [&] { window.swapBuffers(); });
+    }
+    window.shutdownImGui();
+    report.context = "glfw";
+    return report;
+}
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const auto rank = static_cast<size_t>(std::ceil(p / 100.0 * static_cast<double>(values.size())));
+    return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
+}
+
+}  // namespace strata::viewer

@@ -1,0 +1,68 @@
+#version 330 core
+// Display of the accumulation buffer (app/viewer/display_pipeline.h). Each side's image texture
+// holds the mean linear radiance in RGB and the pixel's sample count in A; its error texture holds
+// the relative standard error of the mean luminance. The colour view is renderer/tonemap.cpp's
+// applyTonemap + encodeSrgb (the tests compare the two within 1/255); the error and sample-count
+// views go through app/viewer/false_colour.cpp's ramp, mirrored here.
+
+uniform sampler2D uImage[2];
+uniform sampler2D uError[2];
+uniform vec2 uViewportOrigin;   // window pixels
+uniform vec2 uViewportSize;
+uniform int uSplit;             // 1: left of uDivider shows side 0, right side 1
+uniform float uDivider;         // in [0, 1] of the viewport width
+uniform int uView;              // 0 colour, 1 relative error, 2 sample count
+uniform int uTonemap;           // 0 clamp, 1 reinhard, 2 aces
+uniform float uExposure;        // stops
+uniform float uErrorScale;      // relative error shown at the top of the ramp
+uniform float uSampleScale;     // sample count shown at the top of the ramp
+
+out vec4 fragColour;
+
+const vec3 kNoSamples = vec3(0.25);
+const int kRampStops = 5;
+const vec3 kRamp[kRampStops] = vec3[](vec3(0.05, 0.05, 0.40), vec3(0.00, 0.45, 1.00),
+                                      vec3(0.10, 0.80, 0.20), vec3(1.00, 0.90, 0.00),
+                                      vec3(1.00, 0.10, 0.00));
+
+vec3 falseColour(float t) {
+    float x = clamp(t, 0.0, 1.0) * float(kRampStops - 1);
+    int i = min(int(floor(x)), kRampStops - 2);
+    return mix(kRamp[i], kRamp[i + 1], x - float(i));
+}
+
+vec3 applyTonemap(vec3 linear) {
+    vec3 x = max(linear, vec3(0.0)) * exp2(uExposure);
+    vec3 mapped = x;
+    if (uTonemap == 1) {
+        mapped = x / (vec3(1.0) + x);
+    } else if (uTonemap == 2) {
+        // Narkowicz's fit of the ACES filmic curve.
+        mapped = (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14);
+    }
+    return clamp(mapped, vec3(0.0), vec3(1.0));
+}
+
+vec3 encodeSrgb(vec3 c) {
+    c = clamp(c, vec3(0.0), vec3(1.0));
+    return mix(1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, 12.92 * c, lessThanEqual(c, vec3(0.0031308)));
+}
+
+void main() {
+    vec2 uv = (gl_FragCoord.xy - uViewportOrigin) / uViewportSize;
+    uv.y = 1.0 - uv.y;  // the images' first row is the top one
+    int side = (uSplit == 1 && uv.x >= uDivider) ? 1 : 0;
+    vec4 pixel = side == 0 ? texture(uImage[0], uv) : texture(uImage[1], uv);
+    float error = side == 0 ? texture(uError[0], uv).r : texture(uError[1], uv).r;
+    vec3 colour;
+    if (uView == 0) {
+        colour = encodeSrgb(applyTonemap(pixel.rgb));
+    } else if (pixel.a <= 0.0) {
+        colour = kNoSamples;
+    } else if (uView == 1) {
+        colour = falseColour(error / uErrorScale);
+    } else {
+        colour = falseColour(pixel.a / uSampleScale);
+    }
+    fragColour = vec4(colour, 1.0);
+}

@@ -1,0 +1,128 @@
+// `strata view` end to end: offscreen (--headless=osmesa) with its JSON report, bad options, and
+// the real windowed viewer under Xvfb writing a screenshot that shows the box and the panel.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+#include <sys/wait.h>
+
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+
+struct Rgb {
+    int width = 0, height = 0;
+    std::vector<unsigned char> pixels;
+    const unsigned char* at(int x, int y) const { return &pixels[3 * (static_cast<size_t>(y) * width + x)]; }
+};
+
+Rgb readPng(const std::filesystem::path& path) {
+    Rgb image;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+    REQUIRE_MESSAGE(data != nullptr, "cannot read " << path);
+    image.pixels.assign(data, data + 3 * static_cast<size_t>(image.width) * image.height);
+    stbi_image_free(data);
+    return image;
+}
+
+}  // namespace
+
+TEST_CASE("view --headless=osmesa renders to the target spp and reports frame times as JSON") {
+    const auto dir = test::scratchDir("view-headless");
+    const auto shot = dir / "shot.png";
+    const auto result = test::runStrata("view --headless=osmesa --frames 3 --window 96 64 --threads 2 "
+                                        "--target-spp 48 --json --screenshot " + shot.string());
+    REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+    const auto report = nlohmann::json::parse(result.out);
+    CHECK(report["context"] == "osmesa");
+    CHECK(report["spp"] == 48);
+    CHECK(report["passes"] == 2);
+    CHECK(report["frames"].get<int>() >= 3);
+    CHECK(report["frame_ms_p95"].get<double>() >= report["frame_ms_p50"].get<double>());
+    CHECK(report["paths"].get<uint64_t>() == 2u * 48u * 96u * 64u);  // both sides, 48 spp, every pixel
+    REQUIRE(report["sides"].size() == 2);
+    CHECK(report["sides"][0]["sampler"] == "uniform");
+    CHECK(report["sides"][1]["sampler"] == "strata24");
+    CHECK(report["sides"][1]["error"].get<double>() > 0.0);  // measured at the second pass
+    const Rgb image = readPng(shot);
+    CHECK(image.width == 96);
+    CHECK(image.height == 64);
+}
+
+TEST_CASE("view rejects bad options with one line and a non-zero exit") {
+    const auto backend = test::runStrata("view --headless=vulkan --frames 1");
+    CHECK(backend.exitCode != 0);
+    CHECK(backend.err.find("--headless") != std::string::npos);
+    const auto frames = test::runStrata("view --headless=osmesa");
+    CHECK(frames.exitCode != 0);
+    CHECK(frames.err.find("--frames") != std::string::npos);
+    const auto scene = test::runStrata("view /nonexistent/scene.obj --headless=osmesa --frames 1");
+    CHECK(scene.exitCode != 0);
+    CHECK(scene.err.find("/nonexistent/scene.obj") != std::string::npos);
+    const auto shot = test::runStrata("view --headless=osmesa --frames 1 --screenshot out.jpg");
+    CHECK(shot.exitCode != 0);
+    CHECK(shot.err.find("--screenshot") != std::string::npos);
+}
+
+TEST_CASE("the windowed viewer under Xvfb shows the Cornell box and the panel") {
+    REQUIRE_MESSAGE(std::system("command -v xvfb-run >/dev/null 2>&1") == 0,
+                    "xvfb-run is missing (scripts/setup.sh installs xvfb)");
+    const auto dir = test::scratchDir("view-xvfb");
+    const auto shot = dir / "window.png";
+    constexpr int kWidth = 800, kHeight = 480;
+    // --no-split: one image, so the box's walls are where the camera puts them.
+    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(STRATA_BINARY) +
+                                " view --no-split --window " + std::to_string(kWidth) + " " +
+                                std::to_string(kHeight) + " --frames 4 --scale 0.25 --target-spp 48 --threads 2 " +
+                                "--exposure 1 --screenshot " + shot.string() + " >" + (dir / "log").string() +
+                                " 2>&1";
+    const int status = std::system(command.c_str());
+    REQUIRE_MESSAGE((WIFEXITED(status) && WEXITSTATUS(status) == 0), "xvfb-run strata view failed, see "
+                                                                       << (dir / "log"));
+    const Rgb image = readPng(shot);
+    REQUIRE(image.width == kWidth);
+    REQUIRE(image.height == kHeight);
+    // The panel, top left: ImGui's dark style, blue title bar and headers (blue well above red).
+    int bluish = 0;
+    for (int y = 8; y < 200; ++y) {
+        for (int x = 8; x < 380; ++x) bluish += image.at(x, y)[2] > image.at(x, y)[0] + 40;
+    }
+    CHECK(bluish > 380 * 192 / 20);
+    // The box: the camera frames it in the central square; its right wall is green. Right of the
+    // panel, the image has lit pixels, and in the right wall's band green dominates red.
+    long green = 0, red = 0, lit = 0;
+    const int boxLeft = (kWidth - kHeight) / 2;
+    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
+        for (int x = boxLeft + kHeight * 85 / 100; x < boxLeft + kHeight * 95 / 100; ++x) {
+            green += image.at(x, y)[1];
+            red += image.at(x, y)[0];
+        }
+        for (int x = 400; x < boxLeft + kHeight; ++x) lit += image.at(x, y)[0] + image.at(x, y)[1] > 40;
+    }
+    CHECK(green > red * 6 / 5);  // the wall is still speckled: a margin, not a factor
+    CHECK(lit > (boxLeft + kHeight - 400) * kHeight / 2 / 4);
+}
+
+TEST_CASE("view --reference measures RMSE: zero for the side that repeats the reference's render") {
+    // The batch renderer's image at the same camera, sampler, depth, seed and spp is the viewer's
+    // strata24 side sample for sample (a pixel's samples depend only on seed, pixel, pass, step),
+    // so that side's RMSE is 0 up to the EXR's float32 rounding, and the uniform side's is noise.
+    const auto dir = test::scratchDir("view-reference");
+    const auto reference = dir / "reference.exr";
+    const auto render = test::runStrata("render " + (test::sourceDir() / "assets/cornell/cornell.obj").string() +
+                                        " --width 48 --height 32 --spp 48 --sampler strata24 --out " +
+                                        reference.string());
+    REQUIRE_MESSAGE(render.exitCode == 0, render.err);
+    const auto view = test::runStrata("view --headless=osmesa --frames 1 --window 48 32 --target-spp 48 --json "
+                                      "--reference " + reference.string());
+    REQUIRE_MESSAGE(view.exitCode == 0, view.err);
+    const auto report = nlohmann::json::parse(view.out);
+    CHECK(report["error_against_reference"] == true);
+    CHECK(report["sides"][0]["sampler"] == "uniform");
+    CHECK(report["sides"][0]["error"].get<double>() > 1e-3);
+    CHECK(report["sides"][1]["error"].get<double>() < 1e-6);
+}

@@ -1,0 +1,138 @@
+// The viewer's UI logic under synthetic Dear ImGui input in an offscreen (OSMesa) context: the
+// panel's controls reach the render worker. ImGui 1.86 predates io.AddKeyEvent, so input goes
+// through io.MousePos / io.MouseDown.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+#include <imgui.h>
+
+#include "test_support.h"
+#include "viewer_run.h"
+
+using namespace strata;
+using namespace strata::viewer;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 720;
+
+struct Harness {
+    std::unique_ptr<OffscreenContext> context = OffscreenContext::create(OffscreenBackend::OsMesa);
+    FrameTarget target = FrameTarget::offscreen(kWidth, kHeight);
+    ImGuiSession imgui;
+    Viewer viewer;
+
+    explicit Harness(const ViewerSettings& settings)
+        : viewer(std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/cornell/cornell.obj")),
+                 settings, nullptr) {
+        frame();
+        frame();  // the panel's layout settles on its second frame
+    }
+    void frame() {
+        beginOffscreenFrame(kWidth, kHeight, 1.0f / 60.0f);
+        viewer.frame(target);
+    }
+    // Moves to the control's point, presses, releases: one click, as ImGui sees it over 3 frames;
+    // then one more frame, so that what the click opened (a combo's popup, placed on its second
+    // frame) is where the next click looks for it.
+    void click(const std::string& control, float fraction = 0.5f) {
+        const auto& controls = viewer.panel().controls();
+        REQUIRE_MESSAGE(controls.count(control) == 1, "no control " << control);
+        const auto rect = controls.at(control);
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(rect.min.x + fraction * (rect.max.x - rect.min.x), rect.centre().y);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        frame();
+    }
+    // Runs frames until `done` holds for the displayed snapshot; fails after a generous bound
+    // (a stuck worker, not a slow one: it is not a timing assertion).
+    template <typename Done>
+    const WorkerSnapshot& waitFor(Done done) {
+        for (int i = 0; i < 1500; ++i) {
+            frame();
+            const WorkerSnapshot* shown = viewer.shownSnapshot();
+            if (shown && done(*shown)) return *shown;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        FAIL("the render worker never reached the expected state");
+        return *viewer.shownSnapshot();
+    }
+};
+
+ViewerSettings smallSingleView() {
+    ViewerSettings settings;
+    settings.split = false;
+    settings.single = {SamplerKind::Uniform, 5};
+    settings.resolutionScale = 0.125f;  // 60x90 pixels: each step is cheap
+    settings.threads = 1;
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("choosing strata24 in the sampler combo changes the sampler and restarts accumulation") {
+    Harness h(smallSingleView());
+    const uint64_t before = h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 2; }).generation;
+    CHECK(h.viewer.workerConfig().sides.at(0).sampler == SamplerKind::Uniform);
+    h.click("sampler");  // opens the combo
+    h.click("sampler/strata24");
+    CHECK(h.viewer.settings().single.sampler == SamplerKind::Strata24);
+    CHECK(h.viewer.workerConfig().sides.at(0).sampler == SamplerKind::Strata24);
+    const auto& restarted = h.waitFor([&](const WorkerSnapshot& s) { return s.generation > before; });
+    CHECK(restarted.spp <= 24);  // accumulation began again
+}
+
+TEST_CASE("the depth slider sets the recursion depth K") {
+    Harness h(smallSingleView());
+    h.click("depth K", 0.99f);  // at the slider's right end
+    CHECK(h.viewer.settings().single.depth == 64);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 64);
+    h.click("depth K", 0.01f);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 0);
+}
+
+TEST_CASE("a target spp set in the panel stops rendering there") {
+    Harness h(smallSingleView());
+    // The "+" button right of the field adds one pass (24) per click.
+    const auto& controls = h.viewer.panel().controls();
+    REQUIRE(controls.count("target spp") == 1);
+    const float plusFraction = 1.0f - 0.5f * ImGui::GetFrameHeight() /
+                                          (controls.at("target spp").max.x - controls.at("target spp").min.x);
+    h.click("target spp", plusFraction);
+    h.click("target spp", plusFraction);
+    REQUIRE(h.viewer.workerConfig().targetSpp == 48);
+    // On a fast run the worker may already rest at 24 spp between the two clicks: wait for the
+    // rest that follows the second one. It must stop exactly at the target, not beyond.
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp >= 48; });
+    CHECK(done.spp == 48);
+    CHECK(done.passes == 2);
+    const uint64_t paths = done.paths;
+    // Resting: more frames and time bring no new samples.
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);
+    CHECK(h.viewer.shownSnapshot()->spp == 48);
+}
+
+TEST_CASE("a scene that fails to load leaves the old one rendering") {
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const auto dir = test::scratchDir("viewer-bad-scene");
+    const auto bad = dir / "bad.obj";
+    std::ofstream(bad) << "v 0 0 0\nf 1 2 3\n";  // indices out of range
+    h.viewer.openScene(bad);
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("bad.obj") != std::string::npos);
+    h.viewer.openScene(dir / "missing.obj");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
