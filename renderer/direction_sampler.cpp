@@ -16,7 +16,8 @@ constexpr NameTable<SamplerKind, 6> kSamplers{{{{"uniform", SamplerKind::Uniform
 
 // A direction from a hemisphere sampler whose cos / pdf is known in closed form: the weight is
 // f * (cos / pdf) with no pdf division, so a Lambertian weight is exactly Kd * (pi / pi).
-SampledDirection hemisphereSample(const LayeredBsdf& bsdf, const glm::vec3& wo,
+template <class Bsdf>
+SampledDirection hemisphereSample(const Bsdf& bsdf, const glm::vec3& wo,
                                   const glm::vec3& wi, float cosOverPdf, int stratum) {
     const float pdf = wi.z > 0.0f ? wi.z / cosOverPdf : 0.0f;
     return {wi, pdf, bsdf.evaluate(wo, wi) * cosOverPdf, stratum};
@@ -28,8 +29,9 @@ std::optional<SamplerKind> parseSamplerKind(std::string_view name) { return kSam
 std::string_view samplerName(SamplerKind kind) { return kSamplers.name(kind); }
 std::string samplerNames() { return kSamplers.joined(); }
 
+template <class Bsdf>
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
-                                 const LayeredBsdf& bsdf, const glm::vec3& wo) {
+                                 const Bsdf& bsdf, const glm::vec3& wo) {
     switch (kind) {
         case SamplerKind::Uniform: {
             const glm::vec3 d = sampleUniformHemisphere(samples.bouncePoint(bounce));
@@ -66,11 +68,11 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce) {
     Material white;
     white.diffuse = glm::vec3(1.0f);
-    return sampleDirection(kind, samples, bounce, LayeredBsdf(white), glm::vec3(0.0f, 0.0f, 1.0f));
+    return sampleDirection(kind, samples, bounce, LambertianBsdf(white), glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
-float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& wo,
-                   const glm::vec3& wi) {
+template <class Bsdf>
+float directionPdf(SamplerKind kind, const Bsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi) {
     if (wi.z <= 0.0f) return 0.0f;
     switch (kind) {
         case SamplerKind::Uniform:
@@ -84,5 +86,12 @@ float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& w
     }
     return 0.0f;
 }
+
+template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int, const LayeredBsdf&,
+                                          const glm::vec3&);
+template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int,
+                                          const LambertianBsdf&, const glm::vec3&);
+template float directionPdf(SamplerKind, const LayeredBsdf&, const glm::vec3&, const glm::vec3&);
+template float directionPdf(SamplerKind, const LambertianBsdf&, const glm::vec3&, const glm::vec3&);
 
 }  // namespace strata

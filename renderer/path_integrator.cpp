@@ -26,8 +26,15 @@ constexpr float kShadowRayShortening = 1e-4f;
 
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
     : scene_(scene), settings_(settings), emitters_(scene.mesh()) {
-    bsdfs_.reserve(scene.mesh().materials.size());
-    for (const Material& material : scene.mesh().materials) bsdfs_.emplace_back(material);
+    const auto& materials = scene.mesh().materials;
+    const bool lambertian = settings.lambertianFastPath && allLambertian(materials);
+    for (const Material& material : materials) {
+        if (lambertian) {
+            lambertianBsdfs_.emplace_back(material);
+        } else {
+            layeredBsdfs_.emplace_back(material);
+        }
+    }
 }
 
 std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
@@ -38,8 +45,15 @@ std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSett
     return std::nullopt;
 }
 
-glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samples,
+glm::vec3 PathIntegrator::radiance(const Ray& ray, const PathSamples& samples,
                                    uint64_t& rays) const {
+    return usesLambertianPath() ? trace(lambertianBsdfs_, ray, samples, rays)
+                                : trace(layeredBsdfs_, ray, samples, rays);
+}
+
+template <class Bsdf>
+glm::vec3 PathIntegrator::trace(const std::vector<Bsdf>& bsdfs, const Ray& cameraRay,
+                                const PathSamples& samples, uint64_t& rays) const {
     const bool sampleEmitters = settings_.nextEventEstimation && !emitters_.empty();
     glm::vec3 radiance(0.0f);
     glm::vec3 weight(1.0f);  // product of f_r cos / pdf along the path so far
@@ -70,7 +84,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         }
         if (bounce == settings_.depth) break;
 
-        const LayeredBsdf& bsdf = bsdfs_[materialIndex];
+        const Bsdf& bsdf = bsdfs[materialIndex];
         if (bsdf.isBlack()) break;  // a black surface ends the path (its weight is zero)
         // Reflection is two-sided: the hemisphere is on the side the ray came from.
         SurfaceHit surface = *hit;
@@ -103,8 +117,9 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
     return radiance;
 }
 
+template <class Bsdf>
 glm::vec3 PathIntegrator::emitterLight(const SurfaceHit& surface, const Frame& frame,
-                                       const glm::vec3& wo, const LayeredBsdf& bsdf,
+                                       const glm::vec3& wo, const Bsdf& bsdf,
                                        const PathSamples& samples, int bounce,
                                        uint64_t& rays) const {
     const EmitterSample light = emitters_.sample(samples.lightSample(bounce));
@@ -130,8 +145,9 @@ glm::vec3 PathIntegrator::emitterLight(const SurfaceHit& surface, const Frame& f
     return f * light.emission * (wi.z * misWeight / lightDensity);
 }
 
+template <class Bsdf>
 glm::vec3 PathIntegrator::pointLightRadiance(const SurfaceHit& surface, const Frame& frame,
-                                             const glm::vec3& wo, const LayeredBsdf& bsdf,
+                                             const glm::vec3& wo, const Bsdf& bsdf,
                                              uint64_t& rays) const {
     glm::vec3 reflected(0.0f);
     for (const PointLight& light : scene_.mesh().pointLights) {

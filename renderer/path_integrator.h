@@ -38,6 +38,9 @@ struct PathIntegratorSettings {
     // q = min(1, max component of its weight) and its weight is divided by q. Unbiased; it trades
     // a little variance for not tracing paths whose weight has become small.
     int rouletteDepth = -1;
+    // A scene whose materials are all Lambertian runs a path compiled for LambertianBsdf, with no
+    // microfacet code on it; false forces the general LayeredBsdf path (to measure the gain).
+    bool lambertianFastPath = true;
 };
 
 // Why every path of this scene carries zero radiance, or nullopt when light can reach the camera:
@@ -52,20 +55,30 @@ public:
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
 
     const PathIntegratorSettings& settings() const { return settings_; }
+    // Whether paths run the Lambertian-only specialisation.
+    bool usesLambertianPath() const { return !lambertianBsdfs_.empty(); }
 
 private:
+    // The path loop, compiled once per material model (LayeredBsdf, LambertianBsdf).
+    template <class Bsdf>
+    glm::vec3 trace(const std::vector<Bsdf>& bsdfs, const Ray& ray, const PathSamples& samples,
+                    uint64_t& rays) const;
     // The reflected radiance from one light sample on the emitting triangles, MIS-weighted
     // against the direction sampler, at `surface` (normal facing the viewer) toward wo.
+    template <class Bsdf>
     glm::vec3 emitterLight(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                           const LayeredBsdf& bsdf, const PathSamples& samples, int bounce,
+                           const Bsdf& bsdf, const PathSamples& samples, int bounce,
                            uint64_t& rays) const;
     // The reflected radiance from the scene's point lights: f_r I cos / r^2 for each visible one.
+    template <class Bsdf>
     glm::vec3 pointLightRadiance(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                                 const LayeredBsdf& bsdf, uint64_t& rays) const;
+                                 const Bsdf& bsdf, uint64_t& rays) const;
 
     const Scene& scene_;
     PathIntegratorSettings settings_;
-    std::vector<LayeredBsdf> bsdfs_;  // one per scene material
+    // One per scene material: the Lambertian ones when the fast path applies, else the layered.
+    std::vector<LayeredBsdf> layeredBsdfs_;
+    std::vector<LambertianBsdf> lambertianBsdfs_;
     EmitterSampler emitters_;
 };
 

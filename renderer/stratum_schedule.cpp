@@ -39,7 +39,9 @@ int permuteStratum(int index, uint64_t key) {
         i = (i * 0x13u) & 31u;
         i ^= i >> 4;
     } while (i >= static_cast<uint32_t>(kStrataCount));
-    const uint32_t rotation = uniformIndex(mixBits(key), kStrataCount);
+    // The walk uses the key's low 20 bits; the rotation takes its top bits (multiply-shift), which
+    // a hash output leaves independent of them, so no second hash is needed.
+    const uint32_t rotation = uniformIndex(key, kStrataCount);
     return static_cast<int>((i + rotation) % kStrataCount);
 }
 
