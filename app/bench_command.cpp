@@ -142,6 +142,7 @@ void BenchCommand::run() const {
     convergence.makeReference = makeReference || quick;  // quick references are small and cheap
     if (!reference.empty()) convergence.referenceFile = fs::path(reference);
     convergence.seed = seed;
+    convergence.skips = true;
     convergence.threads = threads;
     convergence.outDir = out;
     const auto runs = runConvergence(convergence);
@@ -150,7 +151,7 @@ void BenchCommand::run() const {
     std::string summary = "# strata bench" + std::string(quick ? " --quick" : "") + "\n\n" + utcNow() +
                           ", " + cpuModel() + ", " + std::to_string(threadCount) + " threads" +
                           cell(", load average %.2f at the start", startLoad) + ".\n\n" +
-                          convergenceSummary(runs);
+                          convergenceSummary(runs) + "\n" + skipsSummary(runs);
 
     if (!skipThroughput) {
         ThroughputSettings throughput;

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
+#include "adaptive_sampling.h"
 #include "convergence.h"
 #include "error.h"
 #include "image_metrics.h"
@@ -17,6 +19,9 @@
 
 namespace strata {
 namespace {
+
+// The adaptive-sampling variant of the skips comparison stops pixels at 5% relative error.
+constexpr double kBenchNoiseThreshold = 0.05;
 
 using Clock = std::chrono::steady_clock;
 // The reference must not share the bench's random numbers, or its error would correlate with
@@ -83,26 +88,32 @@ ImageError measure(const Image& image, const Reference& reference) {
                               : compareImages(image, reference.image);
 }
 
+// `noiseThreshold` > 0: adaptive sampling (adaptive_sampling.h) decides which pixels get passes.
 ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const Camera& camera,
                       const RenderSettings& render, const Reference& reference,
-                      const ConvergenceSettings& settings) {
+                      const ConvergenceSettings& settings, const std::string& variant = "",
+                      double noiseThreshold = 0.0) {
     ConvergenceRun run{label,
                        loaded.objPath.string(),
                        std::string(samplerName(render.integrator.sampler)),
+                       variant,
                        render.integrator.depth,
                        render.integrator.nextEventEstimation,
                        reference.kind,
                        {}};
     AccumulationBuffer buffer(camera.width(), camera.height());
     ProgressiveRenderer renderer(loaded.scene, camera, render);
-    ProgressReporter progress(run.scene + "/" + run.sampler + "/d" + std::to_string(run.depth),
+    ProgressReporter progress(run.scene + "/" + run.sampler + (variant.empty() ? "" : "/" + variant) +
+                                  "/d" + std::to_string(run.depth),
                               settings.maxPasses, kPathsPerPass);
+    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
     double seconds = 0.0, cpuSeconds = 0.0;
     uint32_t nextCheckpoint = 1;
     for (uint32_t pass = 0; pass < settings.maxPasses; ++pass) {
         const auto start = Clock::now();
         const double cpuStart = processCpuSeconds();
-        renderer.renderPass(buffer, pass);
+        renderer.renderPass(buffer, pass, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
+        if (adaptive.enabled()) adaptive.update(buffer);
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
         cpuSeconds += processCpuSeconds() - cpuStart;
         progress.update(pass + 1, renderer.counters().paths);
@@ -134,7 +145,8 @@ void writeRunCsv(const std::filesystem::path& dir, const ConvergenceRun& run) {
                    cell("%.6g", c.rmse), cell("%.6g", c.relMse), cell("%.6g", c.efficiency),
                    std::to_string(c.nonFinite)});
     }
-    writeTextFile(dir / ("convergence-" + run.scene + "-" + run.sampler + "-d" +
+    writeTextFile(dir / ("convergence-" + run.scene + "-" + run.sampler +
+                         (run.variant.empty() ? "" : "-" + run.variant) + "-d" +
                          std::to_string(run.depth) + ".csv"),
                   table.csv());
 }
@@ -205,6 +217,20 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             }
             plotErrorAgainstTime(settings.outDir, group);
             runs.insert(runs.end(), group.begin(), group.end());
+            if (!settings.skips) continue;
+            render.integrator.sampler = SamplerKind::Strata24;
+            RenderSettings generalPath = render;
+            generalPath.integrator.lambertianFastPath = false;
+            RenderSettings roulette = render;
+            roulette.integrator.rouletteDepth = 2;
+            for (auto [variant, variantRender, threshold] :
+                 {std::tuple{"general-materials", generalPath, 0.0},
+                  std::tuple{"roulette-from-2", roulette, 0.0},
+                  std::tuple{"adaptive-5pct", render, kBenchNoiseThreshold}}) {
+                runs.push_back(runOne(label, loaded, camera, variantRender, *reference, settings,
+                                      variant, threshold));
+                writeRunCsv(settings.outDir, runs.back());
+            }
         }
     }
     return runs;
@@ -217,6 +243,36 @@ bool exact(const ConvergenceRun& run) {
                        [](const Checkpoint& c) { return !(c.rmse > 0.0); });
 }
 
+std::string skipsSummary(const std::vector<ConvergenceRun>& runs) {
+    Table table{{"scene", "depth", "skip", "with: MSE", "with: CPU-s", "without: MSE", "without: CPU-s",
+                 "time to the same error, with / without"},
+                {}};
+    for (const auto& run : runs) {
+        if (run.variant.empty() || run.checkpoints.empty()) continue;
+        const auto plain = std::find_if(runs.begin(), runs.end(), [&](const ConvergenceRun& r) {
+            return r.scene == run.scene && r.depth == run.depth && r.sampler == run.sampler &&
+                   r.variant.empty() && !r.checkpoints.empty();
+        });
+        if (plain == runs.end()) continue;
+        // The Lambertian path is on by default: its variant is the run without the skip.
+        const bool variantIsWithout = run.variant == "general-materials";
+        const Checkpoint& with = (variantIsWithout ? plain->checkpoints : run.checkpoints).back();
+        const Checkpoint& without = (variantIsWithout ? run.checkpoints : plain->checkpoints).back();
+        const std::string skip = variantIsWithout ? "Lambertian-only path"
+                                 : run.variant == "roulette-from-2" ? "Russian roulette from bounce 2"
+                                                                    : "adaptive sampling, threshold 5%";
+        const bool exactBoth = !(with.mse > 0.0) || !(without.mse > 0.0);
+        table.add({run.scene, std::to_string(run.depth), skip, cell("%.4g", with.mse),
+                   cell("%.3f", with.cpuSeconds), cell("%.4g", without.mse), cell("%.3f", without.cpuSeconds),
+                   exactBoth ? "- (zero error)"
+                             : cell("%.3f", (with.mse * with.cpuSeconds) / (without.mse * without.cpuSeconds))});
+    }
+    return "### What each skip gains (strata24)\n\n" + table.markdown() +
+           "\nBelow 1: the skip reaches the same error sooner (Monte Carlo's error^2 ~ 1/time, "
+           "taken at the last checkpoint). The black early out applies only to a scene no light "
+           "reaches, which none of these is: such a scene takes no time instead of a full render.\n";
+}
+
 std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
     Table finals{{"scene", "depth", "sampler", "reference", "spp", "seconds", "CPU-s", "Mpaths/CPU-s",
                   "Mrays/CPU-s",
@@ -225,6 +281,7 @@ std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
     // Group the runs of one (scene, depth) to compare samplers.
     std::map<std::pair<std::string, int>, std::vector<const ConvergenceRun*>> groups;
     for (const auto& run : runs) {
+        if (!run.variant.empty()) continue;  // skipsSummary's
         groups[{run.scene, run.depth}].push_back(&run);
         if (run.checkpoints.empty()) continue;
         const Checkpoint& last = run.checkpoints.back();

@@ -26,6 +26,10 @@ struct ConvergenceSettings {
     uint64_t seed = 0;
     int threads = 0;
     std::filesystem::path outDir;
+    // Also run strata24 with each of the renderer's skips switched the other way (issue "skip
+    // what a scene doesn't need"): the Lambertian-only path off, Russian roulette on, adaptive
+    // sampling on. skipsSummary compares each with the plain strata24 run.
+    bool skips = false;
 };
 
 struct Checkpoint {
@@ -45,6 +49,7 @@ struct ConvergenceRun {
     std::string scene;      // a unique label: the scene's name, "-2" etc. when names repeat
     std::string sceneFile;  // the OBJ
     std::string sampler;
+    std::string variant;  // empty for the plain run, else which skip was switched (see skips)
     int depth = 0;
     bool nee = false;
     std::string reference;  // "analytic", "cache", "file" or "made"
@@ -58,5 +63,9 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings);
 // The analysis tables (markdown) for the summary: per-run final figures, slopes and variance
 // ratios against the paper, equal-time and equal-error comparisons.
 std::string convergenceSummary(const std::vector<ConvergenceRun>& runs);
+
+// Each skip's gain: time to the same error with the skip against without it, taken as the ratio
+// of MSE x CPU seconds at the last checkpoint (Monte Carlo's error^2 ~ 1/time).
+std::string skipsSummary(const std::vector<ConvergenceRun>& runs);
 
 }  // namespace strata

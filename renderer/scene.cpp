@@ -76,7 +76,10 @@ Scene::Scene(MeshData mesh) : mesh_(std::move(mesh)) {
                                            mesh_.positions[tri[2]] - mesh_.positions[tri[0]]);
         normals_.push_back(glm::normalize(cross));
         const Material& m = material(static_cast<uint32_t>(i));
-        summary_.maxAlbedo = glm::max(summary_.maxAlbedo, maxComponent(m.diffuse));
+        // Kd + Ks bounds a layered material's albedo from above (material.h keeps it <= 1 too),
+        // which is what the truncation bound needs.
+        summary_.maxAlbedo =
+            glm::max(summary_.maxAlbedo, glm::min(1.0f, maxComponent(m.diffuse) + maxComponent(m.specular)));
         if (maxComponent(m.emission) > 0.0f) {
             ++summary_.emitters;
             summary_.emittingArea += 0.5 * glm::length(glm::dvec3(cross));

@@ -26,7 +26,7 @@ struct SceneSummary {
     size_t triangles = 0;
     size_t emitters = 0;       // emitting triangles
     double emittingArea = 0.0;
-    float maxAlbedo = 0.0f;    // largest Kd component in use
+    float maxAlbedo = 0.0f;    // upper bound on the albedo of the materials in use: max Kd + max Ks
     float maxEmission = 0.0f;  // largest Ke component in use
 };
 

@@ -26,6 +26,7 @@ run_asan() {
     # Leak checking needs ptrace, which containers often forbid: on where it works.
     ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1} \
     UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+    LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp:fast_unwind_on_malloc=0} \
         ctest --test-dir build-asan --output-on-failure --timeout 900 -j "$jobs"
 }
 

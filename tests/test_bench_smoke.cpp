@@ -54,7 +54,10 @@ TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as sp
         // 16x the samples: the error of an unbiased estimator falls by about 4; ask for 2. A
         // zero-variance estimator (cosine or BSDF sampling of the furnace) is exact from the start
         // and stays within float rounding of the exact value.
-        if (std::stod(rows[1][rmse]) == 0.0) {
+        if (name.find("adaptive") != std::string::npos) {
+            // Adaptive sampling stops pixels at 5% relative error: its curve flattens by design.
+            CHECK(std::stod(rows.back()[rmse]) <= std::stod(rows[1][rmse]));
+        } else if (std::stod(rows[1][rmse]) == 0.0) {
             CHECK(std::stod(rows.back()[rmse]) < 1e-3);
         } else {
             CHECK(std::stod(rows.back()[rmse]) < 0.5 * std::stod(rows[1][rmse]));
