@@ -1,5 +1,8 @@
 #include "stratum_schedule.h"
 
+#include <array>
+#include <utility>
+
 #include "random.h"
 #include "strata24.h"
 
@@ -21,28 +24,32 @@ uint32_t productOffset(uint32_t pass, int bounce) {
     return offset;
 }
 
+// 256 random permutations of 0..23, shuffled (Fisher-Yates) at compile time from a fixed
+// counter-based stream: 6 KiB, small enough to stay in the L1 cache while Embree traverses.
+using StratumPermutation = std::array<uint8_t, kStrataCount>;
+constexpr std::array<StratumPermutation, 256> makePermutationTable() {
+    std::array<StratumPermutation, 256> table{};
+    uint64_t counter = 0;
+    for (StratumPermutation& permutation : table) {
+        for (int i = 0; i < kStrataCount; ++i) permutation[i] = static_cast<uint8_t>(i);
+        for (int i = kStrataCount - 1; i > 0; --i) {
+            const uint32_t j = uniformIndex(mixBits(++counter), static_cast<uint32_t>(i + 1));
+            std::swap(permutation[i], permutation[j]);
+        }
+    }
+    return table;
+}
+constexpr std::array<StratumPermutation, 256> kPermutationTable = makePermutationTable();
+
 }  // namespace
 
 int permuteStratum(int index, uint64_t key) {
-    const uint32_t k = static_cast<uint32_t>(key);
-    uint32_t i = static_cast<uint32_t>(index);
-    // Each line is a bijection of [0, 32); walking the cycle until the value falls below 24 gives a
-    // bijection of [0, 24) (every cycle through [24, 32) is at most 8 steps long).
-    do {
-        i ^= k & 31u;
-        i = (i * 0x1du) & 31u;
-        i ^= i >> 3;
-        i = (i + (k >> 5)) & 31u;
-        i = (i * (((k >> 10) & 30u) | 1u)) & 31u;
-        i ^= i >> 2;
-        i ^= (k >> 15) & 31u;
-        i = (i * 0x13u) & 31u;
-        i ^= i >> 4;
-    } while (i >= static_cast<uint32_t>(kStrataCount));
-    // The walk uses the key's low 20 bits; the rotation takes its top bits (multiply-shift), which
-    // a hash output leaves independent of them, so no second hash is needed.
-    const uint32_t rotation = uniformIndex(key, kStrataCount);
-    return static_cast<int>((i + rotation) % kStrataCount);
+    const StratumPermutation& first = kPermutationTable[key & 0xffu];
+    const StratumPermutation& second = kPermutationTable[(key >> 8) & 0xffu];
+    // The lookups use the key's low 16 bits; the rotation takes its top bits (multiply-shift),
+    // which a hash output leaves independent of them, so no second hash is needed.
+    const uint32_t rotated = second[first[index]] + uniformIndex(key, kStrataCount);
+    return static_cast<int>(rotated >= kStrataCount ? rotated - kStrataCount : rotated);
 }
 
 PathSchedule::PathSchedule(uint64_t pixelKey, uint32_t pass, int step)

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "random.h"
@@ -26,6 +27,31 @@ TEST_CASE("schedule: permuteStratum is a bijection of 0..23 for every key") {
             REQUIRE_FALSE(seen[s]);
             seen[s] = true;
         }
+    }
+}
+
+TEST_CASE("schedule: permuteStratum sends each pair of indices to every ordered pair equally") {
+    // What a random permutation does and a rotation or a fixed shuffle does not: for indices
+    // i != j, (sigma(i), sigma(j)) is uniform over the 24 * 23 ordered pairs of distinct ids.
+    constexpr int kKeys = 552 * 200;
+    for (const auto [i, j] : {std::pair{0, 1}, std::pair{5, 17}, std::pair{23, 12}}) {
+        std::array<int, kStrata * kStrata> counts{};
+        for (uint64_t key = 0; key < kKeys; ++key) {
+            const uint64_t bits = mixBits(key + 0x5eedull);
+            ++counts[static_cast<size_t>(permuteStratum(i, bits) * kStrata + permuteStratum(j, bits))];
+        }
+        const double expected = kKeys / 552.0;
+        double chiSquare = 0.0;
+        for (int a = 0; a < kStrata; ++a) {
+            REQUIRE(counts[static_cast<size_t>(a * kStrata + a)] == 0);
+            for (int b = 0; b < kStrata; ++b) {
+                if (a == b) continue;
+                const double c = counts[static_cast<size_t>(a * kStrata + b)];
+                chiSquare += (c - expected) * (c - expected) / expected;
+            }
+        }
+        INFO("indices " << i << ", " << j << ": chi-square " << chiSquare << " on 551 degrees");
+        CHECK(chiSquare < test::chiSquareCritical(551));
     }
 }
 
