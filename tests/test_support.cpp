@@ -16,12 +16,17 @@ namespace strata::test {
 std::filesystem::path sourceDir() { return STRATA_SOURCE_DIR; }
 std::filesystem::path sharedDir() { return STRATA_SHARED_DIR; }
 
-std::filesystem::path scratchDir(const std::string& name) {
+ScratchDir::~ScratchDir() {
+    std::error_code ignored;  // a destructor must not throw; a leftover folder is harmless
+    std::filesystem::remove_all(*this, ignored);
+}
+
+ScratchDir scratchDir(const std::string& name) {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("strata-test-" + std::to_string(getpid()) + "-" + name);
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    return dir;
+    return ScratchDir(dir);
 }
 
 CommandResult runCommand(const std::string& commandLine) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 #include <glm/vec3.hpp>
 
@@ -15,8 +16,17 @@ namespace strata::test {
 
 std::filesystem::path sourceDir();
 std::filesystem::path sharedDir();
-// A fresh empty folder for one test's files.
-std::filesystem::path scratchDir(const std::string& name);
+// A fresh empty folder for one test's files, removed with everything in it when the test's
+// handle goes out of scope, so runs do not pile up folders in the temp directory. It is a path,
+// so `dir / "file"` and every function taking a path accept it.
+class ScratchDir : public std::filesystem::path {
+public:
+    explicit ScratchDir(std::filesystem::path dir) : std::filesystem::path(std::move(dir)) {}
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    ~ScratchDir();
+};
+ScratchDir scratchDir(const std::string& name);
 
 struct CommandResult {
     int exitCode;
