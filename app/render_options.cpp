@@ -39,18 +39,17 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     if (epsilon) {
+        if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
+        TruncationChoice choice{};
+        try {
+            choice = chooseSceneTruncationDepth(*epsilon, loaded.scene);
+        } catch (const Error& e) {
+            throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
+        }
         const SceneSummary& summary = loaded.scene.summary();
-        if (!loaded.scene.mesh().pointLights.empty()) {
-            throw Error("--epsilon: point lights have no radiance bound; give --depth instead");
-        }
-        const auto choice = chooseTruncationDepth(*epsilon, summary.maxAlbedo, summary.maxEmission);
-        if (!choice) {
-            throw Error("--epsilon: the scene's largest albedo is " + std::to_string(summary.maxAlbedo) +
-                        " >= 1, so no finite depth bounds the truncation error; give --depth");
-        }
-        settings.integrator.depth = choice->depth;
+        settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
-                     choice->depth, *epsilon, choice->bound, summary.maxAlbedo, summary.maxEmission);
+                     choice.depth, *epsilon, choice.bound, summary.maxAlbedo, summary.maxEmission);
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;

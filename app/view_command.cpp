@@ -20,6 +20,8 @@ struct ViewCommand {
     std::vector<int> window{1280, 720};
     bool split = true;
     int targetSpp = 0;
+    float targetSeconds = 0.0f;
+    float noiseThreshold = 0.0f;
     float scale = 1.0f;
     float exposure = 0.0f;
     std::string tonemap = "clamp";
@@ -39,6 +41,12 @@ std::filesystem::path defaultScene() {
 
 void ViewCommand::run() const {
     if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
+        throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
+    }
+    if (!(noiseThreshold >= 0.0f && noiseThreshold <= 10.0f)) {
+        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+    }
     if (frames < 0) throw Error("--frames: must be at least 0");
     if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
@@ -61,9 +69,17 @@ void ViewCommand::run() const {
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
     viewerSettings.nextEventEstimation = settings.integrator.nextEventEstimation;
+    viewerSettings.rouletteDepth = settings.integrator.rouletteDepth;
+    viewerSettings.lambertianFastPath = settings.integrator.lambertianFastPath;
+    if (render.epsilon) {
+        viewerSettings.depthFromEpsilon = true;
+        viewerSettings.epsilon = static_cast<float>(*render.epsilon);
+    }
     viewerSettings.seed = settings.seed;
     viewerSettings.threads = settings.threads;
     viewerSettings.targetSpp = targetSpp;
+    viewerSettings.targetSeconds = targetSeconds;
+    viewerSettings.noiseThreshold = noiseThreshold;
     viewerSettings.resolutionScale = scale;
     viewerSettings.display.exposure = exposure;
     viewerSettings.display.tonemap = *tonemapKind;
@@ -134,12 +150,17 @@ void addViewCommand(CLI::App& app) {
                     "Run offscreen: egl (surfaceless Mesa) or osmesa; bare --headless tries both")
         ->expected(0, 1)
         ->default_str("auto");
-    sub->add_option("--frames", command->frames, "Stop after N UI frames (and --target-spp if given)");
+    sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
     sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
     sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
+        ->capture_default_str();
+    sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
+        ->capture_default_str();
+    sub->add_option("--noise-threshold", command->noiseThreshold,
+                    "Adaptive sampling: stop sampling pixels whose relative standard error is at most T (0: off)")
         ->capture_default_str();
     sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
         ->capture_default_str();

@@ -29,6 +29,11 @@ std::optional<SamplerKind> parseSamplerKind(std::string_view name) { return kSam
 std::string_view samplerName(SamplerKind kind) { return kSamplers.name(kind); }
 std::string samplerNames() { return kSamplers.joined(); }
 
+bool stratifies(SamplerKind kind) {
+    return kind == SamplerKind::Strata24 || kind == SamplerKind::Strata24Cosine ||
+           kind == SamplerKind::Strata24Qmc;
+}
+
 template <class Bsdf>
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
                                  const Bsdf& bsdf, const glm::vec3& wo) {

@@ -35,6 +35,9 @@ std::optional<SamplerKind> parseSamplerKind(std::string_view name);
 std::string_view samplerName(SamplerKind kind);
 // "uniform|strata24|...", for option help and error messages.
 std::string samplerNames();
+// Whether the sampler gives each pass one path per stratum, so that a pass's 24 paths are not
+// independent and a pixel's error must be judged from the spread of its pass means.
+bool stratifies(SamplerKind kind);
 
 struct SampledDirection {
     glm::vec3 local;   // unit direction in the surface's local frame, z >= 0

@@ -83,8 +83,9 @@ void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
 }
 
 void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
-                                     const std::atomic<bool>* cancel) {
-    render(buffer, pass, step, step + 1, nullptr, cancel);
+                                     const std::atomic<bool>* cancel,
+                                     const std::vector<uint8_t>* skip) {
+    render(buffer, pass, step, step + 1, skip, cancel);
 }
 
 void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,

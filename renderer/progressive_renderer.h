@@ -42,9 +42,11 @@ public:
     void renderPass(AccumulationBuffer& buffer, uint32_t pass, const std::vector<uint8_t>* skip = nullptr);
     // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass. When `cancel` is
     // given and becomes true, the tiles not yet started are skipped and the buffer is left partial
-    // (the viewer abandons it: a camera change must not wait for a whole step).
+    // (the viewer abandons it: a camera change must not wait for a whole step). `skip` as for
+    // renderPass; it must not change within a pass.
     void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
-                    const std::atomic<bool>* cancel = nullptr);
+                    const std::atomic<bool>* cancel = nullptr,
+                    const std::vector<uint8_t>* skip = nullptr);
 
     RenderCounters counters() const { return {paths_.load(), rays_.load()}; }
     const RenderSettings& settings() const { return settings_; }

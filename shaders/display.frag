@@ -1,9 +1,10 @@
 #version 330 core
 // Display of the accumulation buffer (app/viewer/display_pipeline.h). Each side's image texture
 // holds the mean linear radiance in RGB and the pixel's sample count in A; its error texture holds
-// the relative standard error of the mean luminance. The colour view is renderer/tonemap.cpp's
-// applyTonemap + encodeSrgb (the tests compare the two within 1/255); the error and sample-count
-// views go through app/viewer/false_colour.cpp's ramp, mirrored here.
+// the relative standard error of the mean luminance (R) and 1 where adaptive sampling has finished
+// the pixel (G). The colour view is renderer/tonemap.cpp's applyTonemap + encodeSrgb (the tests
+// compare the two within 1/255); the error and sample-count views go through
+// app/viewer/false_colour.cpp's ramp, and the adaptive-mask view through its wash, mirrored here.
 
 uniform sampler2D uImage[2];
 uniform sampler2D uError[2];
@@ -11,7 +12,7 @@ uniform vec2 uViewportOrigin;   // window pixels
 uniform vec2 uViewportSize;
 uniform int uSplit;             // 1: left of uDivider shows side 0, right side 1
 uniform float uDivider;         // in [0, 1] of the viewport width
-uniform int uView;              // 0 colour, 1 relative error, 2 sample count
+uniform int uView;              // 0 colour, 1 relative error, 2 sample count, 3 adaptive mask
 uniform int uTonemap;           // 0 clamp, 1 reinhard, 2 aces
 uniform float uExposure;        // stops
 uniform float uErrorScale;      // relative error shown at the top of the ramp
@@ -20,6 +21,8 @@ uniform float uSampleScale;     // sample count shown at the top of the ramp
 out vec4 fragColour;
 
 const vec3 kNoSamples = vec3(0.25);
+const vec3 kDoneGreen = vec3(0.10, 0.85, 0.25);
+const float kDoneWash = 0.65;
 const int kRampStops = 5;
 const vec3 kRamp[kRampStops] = vec3[](vec3(0.05, 0.05, 0.40), vec3(0.00, 0.45, 1.00),
                                       vec3(0.10, 0.80, 0.20), vec3(1.00, 0.90, 0.00),
@@ -53,10 +56,14 @@ void main() {
     uv.y = 1.0 - uv.y;  // the images' first row is the top one
     int side = (uSplit == 1 && uv.x >= uDivider) ? 1 : 0;
     vec4 pixel = side == 0 ? texture(uImage[0], uv) : texture(uImage[1], uv);
-    float error = side == 0 ? texture(uError[0], uv).r : texture(uError[1], uv).r;
+    vec2 errorAndDone = side == 0 ? texture(uError[0], uv).rg : texture(uError[1], uv).rg;
+    float error = errorAndDone.r;
     vec3 colour;
     if (uView == 0) {
         colour = encodeSrgb(applyTonemap(pixel.rgb));
+    } else if (uView == 3) {
+        colour = encodeSrgb(applyTonemap(pixel.rgb));
+        if (errorAndDone.g > 0.5) colour = mix(colour, kDoneGreen, kDoneWash);
     } else if (pixel.a <= 0.0) {
         colour = kNoSamples;
     } else if (uView == 1) {

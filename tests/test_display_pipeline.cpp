@@ -24,16 +24,18 @@ DisplayImage makeImage(int width, int height) {
     image.width = width;
     image.height = height;
     image.meanAndCount.assign(4 * static_cast<size_t>(width) * height, 0.0f);
-    image.relativeError.assign(static_cast<size_t>(width) * height, 0.0f);
+    image.errorAndDone.assign(2 * static_cast<size_t>(width) * height, 0.0f);
     return image;
 }
 
-void setPixel(DisplayImage& image, size_t pixel, glm::vec3 mean, float samples, float error = 0.0f) {
+void setPixel(DisplayImage& image, size_t pixel, glm::vec3 mean, float samples, float error = 0.0f,
+              bool done = false) {
     image.meanAndCount[4 * pixel + 0] = mean.x;
     image.meanAndCount[4 * pixel + 1] = mean.y;
     image.meanAndCount[4 * pixel + 2] = mean.z;
     image.meanAndCount[4 * pixel + 3] = samples;
-    image.relativeError[pixel] = error;
+    image.errorAndDone[2 * pixel + 0] = error;
+    image.errorAndDone[2 * pixel + 1] = done ? 1.0f : 0.0f;
 }
 
 // Draws `settings` over the whole target and returns its RGB bytes, top row first.
@@ -161,4 +163,28 @@ TEST_CASE("error and sample-count views map known values to the false-colour ram
         // Second row: pixel 0 has no samples (grey), the others the ramp at 0.1 / scale.
         CHECK(int(pixels[3 * kWidth]) == int(byteOf(kNoSamplesGrey)));
     }
+}
+
+TEST_CASE("the adaptive-mask view washes done pixels green and leaves the others as displayed") {
+    const auto context = OffscreenContext::create(OffscreenBackend::OsMesa);
+    DisplayPipeline pipeline;
+    constexpr int kWidth = 8, kHeight = 1;
+    DisplayImage image = makeImage(kWidth, kHeight);
+    for (int x = 0; x < kWidth; ++x) {
+        setPixel(image, static_cast<size_t>(x), glm::vec3(0.1f * static_cast<float>(x)), 24.0f, 0.0f, x % 2 == 1);
+    }
+    pipeline.upload(0, image);
+    DisplaySettings settings;
+    settings.view = DisplayView::AdaptiveMask;
+    const auto pixels = display(pipeline, settings, kWidth, kHeight);
+    for (int x = 0; x < kWidth; ++x) {
+        CAPTURE(x);
+        const glm::vec3 mapped = applyTonemap(glm::vec3(0.1f * static_cast<float>(x)), 0.0f, Tonemap::Clamp);
+        const glm::vec3 displayed(encodeSrgb(mapped.x), encodeSrgb(mapped.y), encodeSrgb(mapped.z));
+        const glm::vec3 want = adaptiveMaskColour(displayed, x % 2 == 1);
+        for (int c = 0; c < 3; ++c) CHECK(std::abs(int(pixels[3 * x + c]) - int(byteOf(want[c]))) <= 1);
+    }
+    // Done pixels are greener than their neighbours, whatever their colour.
+    CHECK(int(pixels[3 * 1 + 1]) > int(pixels[3 * 1 + 0]));
+    CHECK(adaptiveMaskColour(glm::vec3(1.0f), true).y > adaptiveMaskColour(glm::vec3(1.0f), true).x);
 }

@@ -43,7 +43,7 @@ TEST_CASE("image io: PFM holds little-endian floats, bottom row first") {
     CHECK(first[0] == 10 * 0.25f);  // pixel (0, 2): index 10
 }
 
-TEST_CASE("image io: PNG is written; bad formats and bad files are one-line errors") {
+TEST_CASE("image io: PNG is written, and bad formats and bad files are one-line errors") {
     const auto dir = test::scratchDir("png");
     writeImage(dir / "a.png", gradient(), {1.0f, Tonemap::Aces});
     CHECK(std::filesystem::file_size(dir / "a.png") > 0);

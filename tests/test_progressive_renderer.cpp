@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <vector>
+
 #include "accumulation_buffer.h"
 #include "progressive_renderer.h"
 #include "scene_loader.h"
@@ -63,4 +65,20 @@ TEST_CASE("renderer: a different seed gives a different image") {
     size_t differing = 0;
     for (size_t i = 0; i < a.pixelCount(); ++i) differing += a.mean(i) != b.mean(i) ? 1 : 0;
     CHECK(differing == a.pixelCount());
+}
+
+TEST_CASE("renderer: steps and passes leave the pixels of the skip mask alone") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
+    const Camera camera(loaded.settings.pose, 8, 8);
+    std::vector<uint8_t> skip(64, 0);
+    for (size_t p = 0; p < skip.size(); p += 3) skip[p] = 1;
+    AccumulationBuffer buffer(8, 8);
+    ProgressiveRenderer renderer(loaded.scene, camera, {{2, SamplerKind::Strata24, false}, 5, 1});
+    for (int step = 0; step < kPathsPerPass; ++step) renderer.renderStep(buffer, 0, step, nullptr, &skip);
+    renderer.renderPass(buffer, 1, &skip);
+    for (size_t p = 0; p < skip.size(); ++p) {
+        CAPTURE(p);
+        CHECK(buffer.sampleCount(p) == (skip[p] ? 0u : 2u * kPathsPerPass));
+        CHECK(buffer.completedPasses(p) == (skip[p] ? 0u : 2u));
+    }
 }

@@ -1,6 +1,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
 
 #include "error.h"
 #include "progressive_renderer.h"
@@ -29,7 +31,7 @@ TEST_CASE("truncation: K_eps matches the notes' table (section 5.5, absolute eps
     }
 }
 
-TEST_CASE("truncation: albedo >= 1 has no finite depth; no light or no reflection needs none") {
+TEST_CASE("truncation: albedo >= 1 has no finite depth, and no light or no reflection needs none") {
     CHECK_FALSE(chooseTruncationDepth(1e-3, 1.0, 1.0).has_value());
     CHECK(chooseTruncationDepth(1e-3, 0.0, 5.0)->depth == 0);
     CHECK(chooseTruncationDepth(1e-3, 0.7, 0.0)->depth == 0);
@@ -52,4 +54,22 @@ TEST_CASE("truncation: on the furnace the bound is the exact error of the trunca
     const auto estimate = test::estimateMean(means);
     const double infinite = summary.maxEmission / (1.0 - summary.maxAlbedo);
     CHECK(std::abs(estimate.mean - (infinite - choice->bound)) < 4.0 * estimate.standardError);
+}
+
+TEST_CASE("truncation: a scene's K_eps comes from its summary, or an error says why there is none") {
+    const LoadedScene furnace = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
+    CHECK(chooseSceneTruncationDepth(1e-3, furnace.scene).depth == 10);  // 0.5^K <= 1e-3
+    const LoadedScene pointLit = loadScene(test::sharedDir() / "scenes/cornell_point/scene.obj");
+    CHECK_THROWS_WITH_AS(chooseSceneTruncationDepth(1e-3, pointLit.scene), "point lights have no radiance bound",
+                         Error);
+    const auto dir = test::scratchDir("truncation-white");
+    std::ofstream(dir / "white.mtl") << "newmtl white\nKd 1 1 1\nKe 1 1 1\n";
+    std::ofstream(dir / "white.obj") << "mtllib white.mtl\nusemtl white\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const LoadedScene white = loadScene(dir / "white.obj");
+    try {
+        chooseSceneTruncationDepth(1e-3, white.scene);
+        FAIL("a white scene has no finite K_eps");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("largest albedo is 1 >= 1") != std::string::npos);
+    }
 }

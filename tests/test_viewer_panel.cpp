@@ -24,9 +24,9 @@ struct Harness {
     ImGuiSession imgui;
     Viewer viewer;
 
-    explicit Harness(const ViewerSettings& settings)
-        : viewer(std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/cornell/cornell.obj")),
-                 settings, nullptr) {
+    explicit Harness(const ViewerSettings& settings,
+                     const std::filesystem::path& scene = test::sourceDir() / "assets/cornell/cornell.obj")
+        : viewer(std::make_shared<const LoadedScene>(loadScene(scene)), settings, nullptr) {
         frame();
         frame();  // the panel's layout settles on its second frame
     }
@@ -135,4 +135,79 @@ TEST_CASE("a scene that fails to load leaves the old one rendering") {
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sliders") {
+    // The furnace (albedo 0.5, Le 1): the bound Le a^(K+1) / (1 - a) = 0.5^K is at most 1e-3
+    // first at K = 10.
+    ViewerSettings settings = smallSingleView();
+    settings.epsilon = 1e-3f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    h.click("depth from epsilon");
+    REQUIRE(h.viewer.settings().depthFromEpsilon);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 10);
+    CHECK(h.viewer.settings().halves[0].depth == 10);
+    CHECK(h.viewer.settings().halves[1].depth == 10);
+    h.click("depth K", 0.01f);  // disabled: the click changes nothing
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 10);
+    h.click("depth from epsilon");
+    h.click("depth K", 0.01f);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 0);
+}
+
+TEST_CASE("depth from epsilon leaves the depth alone where no finite depth bounds the error") {
+    ViewerSettings settings = smallSingleView();
+    settings.single.depth = 3;
+    Harness h(settings, test::sharedDir() / "scenes/cornell_point/scene.obj");
+    h.click("depth from epsilon");
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 3);  // point lights: no radiance bound
+}
+
+TEST_CASE("a noise threshold stops every pixel, then rendering, and the mask view shows them done") {
+    ViewerSettings settings = smallSingleView();
+    settings.single = {SamplerKind::Strata24, 2};
+    settings.noiseThreshold = 0.05f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
+    REQUIRE(done.sides.size() == 1);
+    CHECK(done.sides[0].activePixels == 0);
+    CHECK(done.passes >= 4);  // AdaptiveSettings::minPasses
+    const auto& flags = done.sides[0].image.errorAndDone;
+    for (size_t p = 1; p < flags.size(); p += 2) REQUIRE(flags[p] == 1.0f);
+    // Every pixel's relative error is under the threshold, and the mean is the exact furnace
+    // value at depth 2, Le (1 + a + a^2) = 1.75, within the threshold's statistical slack.
+    const auto& pixels = done.sides[0].image.meanAndCount;
+    double sum = 0.0;
+    for (size_t p = 0; p < flags.size() / 2; ++p) {
+        CHECK(flags[2 * p] <= 0.05f);
+        sum += pixels[4 * p];
+    }
+    CHECK(sum / static_cast<double>(flags.size() / 2) == doctest::Approx(1.75).epsilon(0.01));
+    const uint64_t paths = done.paths;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);  // resting
+
+    // The furnace is white under the clamp tonemap; the mask view washes done pixels green.
+    const auto colour = h.target.readRgb();
+    h.viewer.settings().display.view = DisplayView::AdaptiveMask;
+    h.frame();
+    const auto mask = h.target.readRgb();
+    const size_t at = 3 * (static_cast<size_t>(kHeight / 2) * kWidth + kWidth - 10);  // right of the panel
+    CHECK(int(colour[at + 0]) == 255);
+    CHECK(int(colour[at + 1]) == 255);
+    CHECK(int(mask[at + 1]) > int(mask[at + 0]) + 60);
+    CHECK(int(mask[at + 1]) > int(mask[at + 2]) + 60);
+}
+
+TEST_CASE("a target render time stops rendering once that much time is spent") {
+    ViewerSettings settings = smallSingleView();
+    settings.targetSeconds = 0.3f;
+    Harness h(settings);
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
+    CHECK(done.renderSeconds >= 0.3);
+    const uint64_t paths = done.paths;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);
 }

@@ -8,13 +8,14 @@ double pixelStandardError(const AccumulationBuffer& buffer, size_t pixel, bool s
     return stratified ? buffer.passStandardError(pixel) : buffer.sampleStandardError(pixel);
 }
 
-DisplayImage DisplayImage::fromBuffer(const AccumulationBuffer& buffer, bool stratified) {
+DisplayImage DisplayImage::fromBuffer(const AccumulationBuffer& buffer, bool stratified,
+                                      const std::vector<uint8_t>* done) {
     DisplayImage image;
     image.width = buffer.width();
     image.height = buffer.height();
     const size_t pixels = buffer.pixelCount();
     image.meanAndCount.resize(4 * pixels);
-    image.relativeError.resize(pixels);
+    image.errorAndDone.resize(2 * pixels);
     for (size_t p = 0; p < pixels; ++p) {
         const glm::dvec3 mean = buffer.mean(p);
         image.meanAndCount[4 * p + 0] = static_cast<float>(mean.x);
@@ -22,8 +23,9 @@ DisplayImage DisplayImage::fromBuffer(const AccumulationBuffer& buffer, bool str
         image.meanAndCount[4 * p + 2] = static_cast<float>(mean.z);
         image.meanAndCount[4 * p + 3] = static_cast<float>(buffer.sampleCount(p));
         const double y = luminance(mean);
-        image.relativeError[p] =
+        image.errorAndDone[2 * p + 0] =
             y > 0.0 ? static_cast<float>(pixelStandardError(buffer, p, stratified) / y) : 0.0f;
+        image.errorAndDone[2 * p + 1] = done && (*done)[p] ? 1.0f : 0.0f;
     }
     return image;
 }

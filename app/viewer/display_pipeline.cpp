@@ -77,8 +77,8 @@ void DisplayPipeline::upload(int side, const DisplayImage& image) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
                  image.meanAndCount.data());
     glBindTexture(GL_TEXTURE_2D, errorTextures_.at(side));
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, image.width, image.height, 0, GL_RED, GL_FLOAT,
-                 image.relativeError.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, image.width, image.height, 0, GL_RG, GL_FLOAT,
+                 image.errorAndDone.data());
 }
 
 void DisplayPipeline::draw(const DisplaySettings& settings, const Viewport& viewport) const {

@@ -9,7 +9,7 @@
 
 namespace strata::viewer {
 
-enum class DisplayView { Colour, RelativeError, SampleCount };
+enum class DisplayView { Colour, RelativeError, SampleCount, AdaptiveMask };
 
 struct DisplaySettings {
     DisplayView view = DisplayView::Colour;

@@ -16,4 +16,8 @@ glm::vec3 falseColour(float t) {
     return glm::mix(kRamp[i], kRamp[i + 1], x - static_cast<float>(i));
 }
 
+glm::vec3 adaptiveMaskColour(const glm::vec3& displayed, bool done) {
+    return done ? glm::mix(displayed, glm::vec3(0.10f, 0.85f, 0.25f), kDoneWash) : displayed;
+}
+
 }  // namespace strata::viewer

@@ -59,6 +59,8 @@ void GlfwWindow::beginFrame() {
     ImGui_ImplGlfw_NewFrame();
 }
 
+void GlfwWindow::waitForEvent() { glfwWaitEvents(); }
+
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }

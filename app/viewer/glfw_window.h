@@ -22,6 +22,9 @@ public:
     void shutdownImGui();
     // Polls events and starts the ImGui platform frame.
     void beginFrame();
+    // Blocks until the window has an event (input, resize, expose, a dropped file): how the
+    // viewer rests without using CPU once rendering has reached its target.
+    void waitForEvent();
     void swapBuffers();
     bool shouldClose() const;
     void framebufferSize(int& width, int& height) const;

@@ -26,8 +26,10 @@ double secondsSince(Clock::time_point start) {
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
     return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
            a.height != b.height || a.sides != b.sides ||
-           a.nextEventEstimation != b.nextEventEstimation || a.seed != b.seed ||
-           a.threads != b.threads || a.preview != b.preview || a.reference != b.reference;
+           a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
+           a.lambertianFastPath != b.lambertianFastPath || a.seed != b.seed ||
+           a.threads != b.threads || a.preview != b.preview || a.reference != b.reference ||
+           a.noiseThreshold != b.noiseThreshold;
 }
 
 struct RenderWorker::Job {
@@ -35,6 +37,7 @@ struct RenderWorker::Job {
         AccumulationBuffer buffer;
         std::unique_ptr<ProgressiveRenderer> renderer;
         bool stratified;
+        AdaptiveSampling adaptive;
         double seconds = 0.0;
         std::vector<ErrorSample> history;
     };
@@ -50,9 +53,22 @@ struct RenderWorker::Job {
     std::string error;
 
     uint32_t spp() const { return pass * kPathsPerPass + static_cast<uint32_t>(step); }
+    double renderSeconds() const {
+        double total = 0.0;
+        for (const Side& side : sides) total += side.seconds;
+        return total;
+    }
+    // Every pixel of every side under the noise threshold (checked at complete passes only).
+    bool converged() const {
+        return !sides.empty() && step == 0 && std::all_of(sides.begin(), sides.end(), [](const Side& side) {
+                   return side.adaptive.enabled() && side.adaptive.activePixels() == 0;
+               });
+    }
     bool finished(const WorkerConfig& config) const {
         return !error.empty() || sides.empty() || config.paused ||
-               (config.targetSpp > 0 && spp() >= config.targetSpp) || (preview && spp() >= 1);
+               (config.targetSpp > 0 && spp() >= config.targetSpp) ||
+               (config.targetSeconds > 0.0 && renderSeconds() >= config.targetSeconds) || converged() ||
+               (preview && spp() >= 1);
     }
 };
 
@@ -86,6 +102,11 @@ std::shared_ptr<const WorkerSnapshot> RenderWorker::latest() {
     return latest_;
 }
 
+void RenderWorker::setPublishCallback(std::function<void()> onPublish) {
+    std::lock_guard lock(snapshotMutex_);
+    onPublish_ = std::move(onPublish);
+}
+
 void RenderWorker::run() {
     std::unique_ptr<Job> job;
     uint64_t seenVersion = 0;
@@ -117,12 +138,16 @@ void RenderWorker::run() {
                     settings.integrator.depth = side.depth;
                     settings.integrator.sampler = side.sampler;
                     settings.integrator.nextEventEstimation = config.nextEventEstimation;
+                    settings.integrator.rouletteDepth = config.rouletteDepth;
+                    settings.integrator.lambertianFastPath = config.lambertianFastPath;
                     settings.seed = config.seed;
                     settings.threads = config.threads;
+                    const size_t pixels = static_cast<size_t>(job->camera->width()) * job->camera->height();
                     job->sides.push_back(Job::Side{
                         AccumulationBuffer(job->camera->width(), job->camera->height()),
                         std::make_unique<ProgressiveRenderer>(config.scene->scene, *job->camera, settings),
-                        side.sampler == SamplerKind::Strata24, 0.0, {}});
+                        stratifies(side.sampler),
+                        AdaptiveSampling({config.preview ? 0.0 : config.noiseThreshold}, pixels), 0.0, {}});
                 }
             } catch (const std::exception& e) {
                 job->sides.clear();
@@ -142,7 +167,8 @@ bool RenderWorker::renderStep(Job& job) {
     for (auto& side : job.sides) {
         const auto start = Clock::now();
         const uint64_t before = side.renderer->counters().paths;
-        side.renderer->renderStep(side.buffer, job.pass, job.step, &cancel_);
+        const auto* skip = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
+        side.renderer->renderStep(side.buffer, job.pass, job.step, &cancel_, skip);
         const double seconds = secondsSince(start);
         side.seconds += seconds;
         totalRenderSeconds_ += seconds;
@@ -152,6 +178,10 @@ bool RenderWorker::renderStep(Job& job) {
     if (++job.step < kPathsPerPass) return true;
     job.step = 0;
     ++job.pass;
+    // The mask changes only between passes, so every pixel's passes stay complete.
+    for (auto& side : job.sides) {
+        if (side.adaptive.enabled()) side.adaptive.update(side.buffer);
+    }
     // Noise is measured at complete passes; strata24's estimate needs two pass means.
     if (job.pass < 2) return true;
     for (auto& side : job.sides) {
@@ -188,6 +218,7 @@ void RenderWorker::publish(const Job& job, bool idle) {
     snapshot->spp = job.spp();
     snapshot->passes = job.pass;
     snapshot->elapsedSeconds = secondsSince(job.start);
+    snapshot->renderSeconds = job.renderSeconds();
     snapshot->totalPaths = totalPaths_;
     snapshot->totalRenderSeconds = totalRenderSeconds_;
     snapshot->error = job.error;
@@ -196,12 +227,19 @@ void RenderWorker::publish(const Job& job, bool idle) {
         snapshot->paths += counters.paths;
         snapshot->rays += counters.rays;
         snapshot->droppedSamples += side.buffer.droppedSamples();
-        snapshot->sides.push_back({DisplayImage::fromBuffer(side.buffer, side.stratified), side.history,
-                                   side.seconds});
+        const auto* done = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
+        snapshot->sides.push_back({DisplayImage::fromBuffer(side.buffer, side.stratified, done), side.history,
+                                   side.seconds, side.adaptive.enabled() ? side.adaptive.activePixels()
+                                                                         : side.buffer.pixelCount()});
     }
-    std::lock_guard lock(snapshotMutex_);
-    latest_ = std::move(snapshot);
-    taken_ = false;
+    std::function<void()> onPublish;
+    {
+        std::lock_guard lock(snapshotMutex_);
+        latest_ = std::move(snapshot);
+        taken_ = false;
+        onPublish = onPublish_;
+    }
+    if (onPublish) onPublish();
 }
 
 }  // namespace strata::viewer

@@ -4,10 +4,12 @@
 // for step, so both always hold equal samples) and publishes snapshots for the UI thread, which
 // only ever takes the latest one under a short lock: it never waits for a step or a pass.
 // Any change of scene, camera or setting restarts accumulation after the step in flight; a target
-// spp or a pause blocks the thread on a condition variable (no CPU) until something changes.
+// (spp, render time, or every pixel under the noise threshold) or a pause blocks the thread on a
+// condition variable (no CPU) until something changes.
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "adaptive_sampling.h"
 #include "direction_sampler.h"
 #include "display_image.h"
 #include "image_io.h"
@@ -35,20 +38,26 @@ struct WorkerConfig {
     int height = 0;
     std::vector<SideConfig> sides;  // one, or two for the split view
     bool nextEventEstimation = false;
+    int rouletteDepth = -1;          // PathIntegratorSettings::rouletteDepth
+    bool lambertianFastPath = true;  // PathIntegratorSettings::lambertianFastPath
     uint64_t seed = 0;
     int threads = 0;
     // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.
     bool preview = false;
     // Reference radiance for RMSE (same size as the image), else the standard error is shown.
     std::shared_ptr<const Image> reference;
-    // These two never restart accumulation.
-    uint32_t targetSpp = 0;  // 0: no limit
+    // Adaptive sampling (renderer/adaptive_sampling.h): a pixel whose relative standard error is
+    // at most this receives no more passes; 0: off.
+    double noiseThreshold = 0.0;
+    // These three never restart accumulation.
+    uint32_t targetSpp = 0;      // 0: no limit
+    double targetSeconds = 0.0;  // render time (all sides), 0: no limit
     bool paused = false;
 };
 
 inline constexpr int kPreviewDivisor = 4;
 
-// Whether going from `a` to `b` restarts accumulation (anything but targetSpp / paused changed).
+// Whether going from `a` to `b` restarts accumulation (anything but the targets / paused changed).
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b);
 
 // One point of a side's error curve, taken at a completed pass.
@@ -62,16 +71,18 @@ struct SideSnapshot {
     DisplayImage image;
     std::vector<ErrorSample> history;
     double seconds = 0.0;
+    size_t activePixels = 0;  // pixels still receiving passes (all of them without a threshold)
 };
 
 struct WorkerSnapshot {
     uint64_t generation = 0;  // bumps on every restart
     bool preview = false;
-    bool idle = false;        // target reached, paused, or preview done
+    bool idle = false;        // a target reached, paused, or preview done
     bool againstReference = false;
     uint32_t spp = 0;         // per pixel, per side
     uint32_t passes = 0;      // completed passes per side
-    double elapsedSeconds = 0.0;
+    double elapsedSeconds = 0.0;  // wall time since this generation began
+    double renderSeconds = 0.0;   // time spent rendering it (what a target time counts)
     uint64_t paths = 0;       // this generation, all sides
     uint64_t rays = 0;
     uint64_t droppedSamples = 0;
@@ -90,10 +101,13 @@ public:
     RenderWorker& operator=(const RenderWorker&) = delete;
 
     // Takes the new configuration; restarts accumulation when `restart` or when anything but
-    // targetSpp / paused changed.
+    // the targets / paused changed.
     void configure(const WorkerConfig& config, bool restart = false);
     // The latest snapshot (null before the first); never waits for rendering.
     std::shared_ptr<const WorkerSnapshot> latest();
+    // Called on the worker thread after each new snapshot: lets a UI that sleeps until an event
+    // (GLFW's glfwWaitEvents) be woken by glfwPostEmptyEvent, which any thread may call.
+    void setPublishCallback(std::function<void()> onPublish);
 
 private:
     struct Job;
@@ -111,9 +125,10 @@ private:
     // Set with a restart so that the step in flight stops at its next tile.
     std::atomic<bool> cancel_{false};
 
-    std::mutex snapshotMutex_;  // guards latest_, taken_
+    std::mutex snapshotMutex_;  // guards latest_, taken_, onPublish_
     std::shared_ptr<const WorkerSnapshot> latest_;
     bool taken_ = true;
+    std::function<void()> onPublish_;
 
     uint64_t totalPaths_ = 0;  // worker thread only
     double totalRenderSeconds_ = 0.0;

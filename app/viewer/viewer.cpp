@@ -89,7 +89,7 @@ void Viewer::frame(const FrameTarget& target) {
         shown_ = std::move(latest);
     }
 
-    const PanelActions actions = panel_.draw(settings_, shown_.get());
+    const PanelActions actions = panel_.draw(settings_, shown_.get(), scene_->scene);
     handleDivider(io, target);
     const auto now = std::chrono::steady_clock::now();
     if (camera_.update(io, !io.WantCaptureMouse && !draggingDivider_, !io.WantCaptureKeyboard)) lastMotion_ = now;
@@ -102,14 +102,19 @@ void Viewer::frame(const FrameTarget& target) {
     config.height = std::max(1, static_cast<int>(std::lround(target.height() * settings_.resolutionScale)));
     config.sides = settings_.sides();
     config.nextEventEstimation = settings_.nextEventEstimation;
+    config.rouletteDepth = settings_.rouletteDepth;
+    config.lambertianFastPath = settings_.lambertianFastPath;
     config.seed = settings_.seed;
     config.threads = settings_.threads;
     config.preview = now - lastMotion_ < kSettleTime;
     config.reference = reference_;
+    config.noiseThreshold = settings_.noiseThreshold;
     config.targetSpp = static_cast<uint32_t>(settings_.targetSpp);
+    config.targetSeconds = settings_.targetSeconds;
     config.paused = settings_.paused;
     if (!everConfigured_ || actions.reset || needsRestart(configured_, config) ||
-        configured_.targetSpp != config.targetSpp || configured_.paused != config.paused) {
+        configured_.targetSpp != config.targetSpp || configured_.targetSeconds != config.targetSeconds ||
+        configured_.paused != config.paused) {
         worker_.configure(config, actions.reset);
         configured_ = config;
         everConfigured_ = true;

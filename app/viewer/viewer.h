@@ -4,6 +4,7 @@
 // display and the panel into a frame target. The same code runs windowed and offscreen.
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -27,6 +28,9 @@ public:
     // Loads a scene; on failure the old one stays and the panel shows why.
     void openScene(const std::filesystem::path& objPath);
     void loadReference(const std::filesystem::path& exrPath);
+
+    // See RenderWorker::setPublishCallback.
+    void setSnapshotCallback(std::function<void()> onSnapshot) { worker_.setPublishCallback(std::move(onSnapshot)); }
 
     ViewerSettings& settings() { return settings_; }
     ViewerPanel& panel() { return panel_; }

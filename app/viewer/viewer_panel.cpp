@@ -5,6 +5,8 @@
 
 #include "error_plot.h"
 #include "progressive_renderer.h"
+#include "scene.h"
+#include "truncation.h"
 
 namespace strata::viewer {
 namespace {
@@ -20,7 +22,7 @@ std::vector<SamplerKind> allSamplers() {
     }
     return kinds;
 }
-constexpr const char* kViews[] = {"colour", "relative error", "sample count"};
+constexpr const char* kViews[] = {"colour", "relative error", "sample count", "adaptive mask"};
 constexpr const char* kTonemaps[] = {"clamp", "reinhard", "aces"};
 constexpr int kMaxDepth = 64;
 
@@ -49,7 +51,7 @@ void ViewerPanel::setReferencePath(const std::string& path) {
     std::snprintf(referencePath_.data(), referencePath_.size(), "%s", path.c_str());
 }
 
-bool ViewerPanel::sideControls(const char* label, SideConfig& side) {
+bool ViewerPanel::sideControls(const char* label, SideConfig& side, bool depthLocked) {
     bool changed = false;
     const std::string samplerLabel = std::string(label) + "sampler";
     const std::string depthLabel = std::string(label) + "depth K";
@@ -67,12 +69,39 @@ bool ViewerPanel::sideControls(const char* label, SideConfig& side) {
         }
         ImGui::EndCombo();
     }
+    ImGui::BeginDisabled(depthLocked);
     changed |= ImGui::SliderInt(depthLabel.c_str(), &side.depth, 0, kMaxDepth);
+    ImGui::EndDisabled();
     remember(depthLabel);
     return changed;
 }
 
-PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot) {
+void ViewerPanel::truncationControls(ViewerSettings& settings, const Scene& scene) {
+    ImGui::Checkbox("depth from epsilon", &settings.depthFromEpsilon);
+    remember("depth from epsilon", false);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::InputFloat("##epsilon", &settings.epsilon, 0.0f, 0.0f, "%.1e");
+    remember("epsilon", false);
+    settings.epsilon = std::clamp(settings.epsilon, 1e-12f, 1e12f);
+    if (!settings.depthFromEpsilon) return;
+    try {
+        const TruncationChoice choice = chooseSceneTruncationDepth(settings.epsilon, scene);
+        for (SideConfig* side : {&settings.single, &settings.halves[0], &settings.halves[1]}) {
+            side->depth = std::min(choice.depth, kMaxDepth);
+        }
+        const SceneSummary& summary = scene.summary();
+        ImGui::TextWrapped("K_eps = %d%s, bound %.2e (max albedo %.3g, max Le %.3g)", choice.depth,
+                           choice.depth > kMaxDepth ? " (capped at 64)" : "", choice.bound,
+                           static_cast<double>(summary.maxAlbedo), static_cast<double>(summary.maxEmission));
+    } catch (const std::exception& e) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.2f, 1));
+        ImGui::TextWrapped("no K_eps: %s", e.what());
+        ImGui::PopStyleColor();
+    }
+}
+
+PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene) {
     PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(380, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
@@ -84,20 +113,31 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Checkbox("split view", &settings.split);
         remember("split view", false);
+        // Locked while epsilon chooses the depth; truncationControls sets it below.
+        const bool depthLocked = settings.depthFromEpsilon;
         if (settings.split) {
-            sideControls("left ", settings.halves[0]);
-            sideControls("right ", settings.halves[1]);
+            sideControls("left ", settings.halves[0], depthLocked);
+            sideControls("right ", settings.halves[1], depthLocked);
         } else {
-            sideControls("", settings.single);
+            sideControls("", settings.single, depthLocked);
         }
+        truncationControls(settings, scene);
         ImGui::Checkbox("next-event estimation", &settings.nextEventEstimation);
+        ImGui::SliderInt("roulette from bounce", &settings.rouletteDepth, -1, kMaxDepth,
+                         settings.rouletteDepth < 0 ? "off" : "%d");
         int seed = static_cast<int>(settings.seed);
         if (ImGui::InputInt("seed", &seed)) settings.seed = static_cast<uint64_t>(std::max(seed, 0));
         ImGui::SliderInt("threads (0: all)", &settings.threads, 0, 64);
         ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.05f, 1.0f, "%.3f");
+        ImGui::InputFloat("noise threshold", &settings.noiseThreshold, 0.01f, 0.05f, "%.3f");
+        remember("noise threshold");
+        settings.noiseThreshold = std::clamp(settings.noiseThreshold, 0.0f, 10.0f);
         ImGui::InputInt("target spp", &settings.targetSpp, kPathsPerPass, 10 * kPathsPerPass);
         remember("target spp");
         settings.targetSpp = std::max(settings.targetSpp, 0);
+        ImGui::InputFloat("target seconds", &settings.targetSeconds, 1.0f, 10.0f, "%.1f");
+        remember("target seconds");
+        settings.targetSeconds = std::max(settings.targetSeconds, 0.0f);
         ImGui::Checkbox("paused", &settings.paused);
         ImGui::SameLine();
         actions.reset = ImGui::Button("reset");
@@ -152,9 +192,15 @@ void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {
                 snapshot->passes, snapshot->elapsedSeconds);
     ImGui::Text("%.2f Msamples/s  %.2f Mrays/s", snapshot->paths / seconds * 1e-6,
                 snapshot->rays / seconds * 1e-6);
+    size_t active = 0, pixels = 0;
+    for (const SideSnapshot& side : snapshot->sides) {
+        active += side.activePixels;
+        pixels += static_cast<size_t>(side.image.width) * side.image.height;
+    }
     ImGui::TextColored(snapshot->droppedSamples > 0 ? ImVec4(1, 0.7f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
-                       "non-finite samples dropped: %llu",
-                       static_cast<unsigned long long>(snapshot->droppedSamples));
+                       "non-finite dropped: %llu   pixels sampled: %.1f%%",
+                       static_cast<unsigned long long>(snapshot->droppedSamples),
+                       pixels > 0 ? 100.0 * static_cast<double>(active) / static_cast<double>(pixels) : 0.0);
 }
 
 void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings) {

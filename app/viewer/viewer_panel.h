@@ -17,11 +17,19 @@ struct ViewerSettings {
     SideConfig single{SamplerKind::Strata24, 5};                    // the one-image view
     std::array<SideConfig, 2> halves{SideConfig{SamplerKind::Uniform, 5},
                                      SideConfig{SamplerKind::Strata24, 5}};  // split: left, right
+    // Every side's depth K_eps from the truncation error `epsilon` (renderer/truncation.h) instead
+    // of the depth sliders, when the scene allows it.
+    bool depthFromEpsilon = false;
+    float epsilon = 1e-3f;
     bool nextEventEstimation = false;
+    int rouletteDepth = -1;  // Russian roulette from this bounce on; -1: off
+    bool lambertianFastPath = true;
     uint64_t seed = 0;
     int threads = 0;
     float resolutionScale = 1.0f;
-    int targetSpp = 0;  // 0: no limit
+    float noiseThreshold = 0.0f;  // adaptive sampling's relative standard error; 0: off
+    int targetSpp = 0;            // 0: no limit
+    float targetSeconds = 0.0f;   // render time; 0: no limit
     bool paused = false;
     DisplaySettings display;
 
@@ -39,8 +47,9 @@ struct PanelActions {
 
 class ViewerPanel {
 public:
-    // Draws the panel for this frame; `snapshot` may be null before the first render.
-    PanelActions draw(ViewerSettings& settings, const WorkerSnapshot* snapshot);
+    // Draws the panel for this frame; `snapshot` may be null before the first render. `scene` is
+    // the one being rendered (its summary bounds the truncation error).
+    PanelActions draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene);
 
     void setMessage(std::string message) { message_ = std::move(message); }
     const std::string& message() const { return message_; }
@@ -61,7 +70,9 @@ public:
 private:
     // `labelled`: the item has a label to the right of its frame, which is left out.
     void remember(const std::string& name, bool labelled = true);
-    bool sideControls(const char* label, SideConfig& side);
+    bool sideControls(const char* label, SideConfig& side, bool depthLocked);
+    // The epsilon control: sets every side's depth to K_eps and says what it chose, or why not.
+    void truncationControls(ViewerSettings& settings, const Scene& scene);
     void readouts(const WorkerSnapshot* snapshot);
     void errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
 

@@ -34,19 +34,24 @@ bool hadInput() {
     return false;
 }
 
+// The worker has stopped at a target (spp, time, noise threshold) or for good (paused, failed).
+bool resting(const WorkerSnapshot* shown) {
+    return shown && (!shown->error.empty() || (shown->idle && !shown->preview));
+}
+
 bool finished(const ViewRunOptions& options, const ViewerSettings& settings, int frame,
               const WorkerSnapshot* shown) {
     if (options.frames <= 0 || frame < options.frames) return false;
-    if (settings.targetSpp <= 0) return true;
+    const bool hasTarget = settings.targetSpp > 0 || settings.targetSeconds > 0.0f || settings.noiseThreshold > 0.0f;
     // Wait for the target, unless rendering cannot get there (a failed configuration).
-    return shown && (!shown->error.empty() ||
-                     (shown->idle && !shown->preview && shown->spp >= static_cast<uint32_t>(settings.targetSpp)));
+    return !hasTarget || resting(shown);
 }
 
-// The frame loop shared by both contexts: `beginFrame` does the platform part, `endFrame` presents.
-template <typename BeginFrame, typename EndFrame>
+// The frame loop shared by both contexts: `beginFrame` does the platform part, `endFrame` presents,
+// `waitForEvent` blocks until there is input and says whether it could (only a window can).
+template <typename BeginFrame, typename EndFrame, typename WaitForEvent>
 ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& target,
-                   BeginFrame beginFrame, EndFrame endFrame) {
+                   BeginFrame beginFrame, EndFrame endFrame, WaitForEvent waitForEvent) {
     ViewRunReport report;
     const auto activeFrame = std::chrono::duration_cast<Clock::duration>(
         std::chrono::duration<double>(1.0 / options.activeFramesPerSecond));
@@ -67,7 +72,11 @@ ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& t
         report.frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - frameStart).count());
         if (last) break;
         if (hadInput()) lastInput = Clock::now();
-        std::this_thread::sleep_until(frameStart + (Clock::now() - lastInput < kIdleAfter ? activeFrame : idleFrame));
+        const bool quiet = Clock::now() - lastInput >= kIdleAfter;
+        // Rendering done and nobody touching anything: nothing on screen can change until an
+        // event comes (input, or a snapshot from the worker), so block on it: no CPU at rest.
+        if (quiet && resting(viewer.shownSnapshot()) && waitForEvent()) continue;
+        std::this_thread::sleep_until(frameStart + (quiet ? idleFrame : activeFrame));
     }
     report.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     report.last = viewer.shownSnapshot() ? std::make_shared<WorkerSnapshot>(*viewer.shownSnapshot()) : nullptr;
@@ -132,7 +141,9 @@ ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSe
                 return true;
             },
             // Wait for the GPU (llvmpipe) so that frame times are what a display would show.
-            [] { glFinish(); });
+            [] { glFinish(); },
+            // Offscreen there are no events to wait for: scripted frames go on at the idle rate.
+            [] { return false; });
         report.context = context->backendName();
         return report;
     }
@@ -145,6 +156,8 @@ ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSe
     ViewRunReport report;
     {
         Viewer viewer(std::move(scene), settings, std::move(reference));
+        // A new render snapshot ends the wait for events below.
+        viewer.setSnapshotCallback([] { glfwPostEmptyEvent(); });
         report = loop(
             viewer, options, target,
             [&](float) {
@@ -154,7 +167,11 @@ ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSe
                 target.resize(std::max(width, 1), std::max(height, 1));
                 return !window.shouldClose();
             },
-            [&] { window.swapBuffers(); });
+            [&] { window.swapBuffers(); },
+            [&] {
+                window.waitForEvent();
+                return true;
+            });
     }
     window.shutdownImGui();
     report.context = "glfw";
