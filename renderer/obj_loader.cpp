@@ -330,8 +330,10 @@ ObjFiles readObjFiles(const std::filesystem::path& path) {
         const auto mtlPath = path.parent_path() / library;
         const std::string text = readTextFile(mtlPath, "material library (named by mtllib)");
         validateMtl(text, mtlPath.string());
-        files.mtlText += text + "\n";
-        files.mtlName += (files.mtlName.empty() ? "" : ",") + mtlPath.string();
+        files.mtlText += text;
+        files.mtlText += '\n';
+        if (!files.mtlName.empty()) files.mtlName += ',';
+        files.mtlName += mtlPath.string();
     }
     if (files.mtlName.empty()) files.mtlName = files.objName;
     return files;

@@ -34,7 +34,7 @@ TEST_CASE("schedule: permuteStratum sends each pair of indices to every ordered 
     // What a random permutation does and a rotation or a fixed shuffle does not: for indices
     // i != j, (sigma(i), sigma(j)) is uniform over the 24 * 23 ordered pairs of distinct ids.
     constexpr int kKeys = 552 * 200;
-    for (const auto [i, j] : {std::pair{0, 1}, std::pair{5, 17}, std::pair{23, 12}}) {
+    for (const auto& [i, j] : {std::pair{0, 1}, std::pair{5, 17}, std::pair{23, 12}}) {
         std::array<int, kStrata * kStrata> counts{};
         for (uint64_t key = 0; key < kKeys; ++key) {
             const uint64_t bits = mixBits(key + 0x5eedull);
