@@ -1,5 +1,6 @@
 #include "progressive_renderer.h"
 
+#include <algorithm>
 #include <string>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
@@ -79,26 +80,28 @@ int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency();
 
 void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
                                      const std::vector<uint8_t>* skip) {
-    render(buffer, pass, 0, kPathsPerPass, skip, nullptr);
+    render(buffer, pass, 0, kPathsPerPass, StepControl{nullptr, skip});
 }
 
 void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
-                                     const std::atomic<bool>* cancel,
-                                     const std::vector<uint8_t>* skip) {
-    render(buffer, pass, step, step + 1, skip, cancel);
+                                     const StepControl& control) {
+    render(buffer, pass, step, step + 1, control);
 }
 
 void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
-                                 int endStep, const std::vector<uint8_t>* skip,
-                                 const std::atomic<bool>* cancel) {
+                                 int endStep, const StepControl& control) {
     const int width = camera_.width();
     const int height = camera_.height();
     if (buffer.width() != width || buffer.height() != height) {
         throw Error("accumulation buffer and camera differ in size");
     }
+    const int endRow = control.endRow < 0 ? height : std::min(control.endRow, height);
+    if (control.firstRow < 0 || control.firstRow > endRow) throw Error("renderStep: bad row range");
+    const std::atomic<bool>* cancel = control.cancel;
+    const std::vector<uint8_t>* skip = control.skip;
     arena_->execute([&] {
         tbb::parallel_for(
-            tbb::blocked_range2d<int>(0, height, kTileSize, 0, width, kTileSize),
+            tbb::blocked_range2d<int>(control.firstRow, endRow, kTileSize, 0, width, kTileSize),
             handedOff([&](const tbb::blocked_range2d<int>& tile) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 // Denormals are never needed for radiance; flushing them keeps every thread fast.

@@ -27,6 +27,15 @@ struct RenderSettings {
     int threads = 0;  // 0: all hardware threads
 };
 
+// How much of a step to render (renderStep): the viewer renders a slow step in bands of rows so
+// that the display can update as they finish, and abandons a step when the camera moves.
+struct StepControl {
+    const std::atomic<bool>* cancel = nullptr;   // when it becomes true, tiles not yet started are skipped
+    const std::vector<uint8_t>* skip = nullptr;  // as renderPass's; must not change within a pass
+    int firstRow = 0;                            // rows [firstRow, endRow) only
+    int endRow = -1;                             // -1: to the last row
+};
+
 struct RenderCounters {
     uint64_t paths = 0;
     uint64_t rays = 0;
@@ -40,13 +49,10 @@ public:
     // All 24 paths of pass `pass` for every pixel; closes the pass in the buffer. Pixels whose
     // entry in `skip` (if given, one per pixel) is non-zero are left alone: adaptive sampling.
     void renderPass(AccumulationBuffer& buffer, uint32_t pass, const std::vector<uint8_t>* skip = nullptr);
-    // Path `step` (0..23) of pass `pass` for every pixel; step 23 closes the pass. When `cancel` is
-    // given and becomes true, the tiles not yet started are skipped and the buffer is left partial
-    // (the viewer abandons it: a camera change must not wait for a whole step). `skip` as for
-    // renderPass; it must not change within a pass.
-    void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
-                    const std::atomic<bool>* cancel = nullptr,
-                    const std::vector<uint8_t>* skip = nullptr);
+    // Path `step` (0..23) of pass `pass` for every pixel of the rows `control` selects (all by
+    // default); step 23 closes the pass for them. A cancelled step leaves the buffer partial (the
+    // viewer abandons it: a camera change must not wait for a whole step).
+    void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step, const StepControl& control = {});
 
     RenderCounters counters() const { return {paths_.load(), rays_.load()}; }
     const RenderSettings& settings() const { return settings_; }
@@ -54,7 +60,7 @@ public:
 
 private:
     void render(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep,
-                const std::vector<uint8_t>* skip, const std::atomic<bool>* cancel);
+                const StepControl& control);
 
     const Scene& scene_;
     const Camera& camera_;

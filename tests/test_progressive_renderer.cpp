@@ -74,11 +74,25 @@ TEST_CASE("renderer: steps and passes leave the pixels of the skip mask alone") 
     for (size_t p = 0; p < skip.size(); p += 3) skip[p] = 1;
     AccumulationBuffer buffer(8, 8);
     ProgressiveRenderer renderer(loaded.scene, camera, {{2, SamplerKind::Strata24, false}, 5, 1});
-    for (int step = 0; step < kPathsPerPass; ++step) renderer.renderStep(buffer, 0, step, nullptr, &skip);
+    for (int step = 0; step < kPathsPerPass; ++step) renderer.renderStep(buffer, 0, step, {nullptr, &skip});
     renderer.renderPass(buffer, 1, &skip);
     for (size_t p = 0; p < skip.size(); ++p) {
         CAPTURE(p);
         CHECK(buffer.sampleCount(p) == (skip[p] ? 0u : 2u * kPathsPerPass));
         CHECK(buffer.completedPasses(p) == (skip[p] ? 0u : 2u));
     }
+}
+
+TEST_CASE("renderer: a step rendered in bands of rows equals the step at once") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const Camera camera(loaded.settings.pose, 20, 37);
+    const RenderSettings settings{{3, SamplerKind::Strata24, false}, 77, 2};
+    AccumulationBuffer whole(20, 37), banded(20, 37);
+    ProgressiveRenderer a(loaded.scene, camera, settings), b(loaded.scene, camera, settings);
+    for (int step = 0; step < kPathsPerPass; ++step) {
+        a.renderStep(whole, 0, step);
+        for (int row = 0; row < 37; row += 5) b.renderStep(banded, 0, step, {nullptr, nullptr, row, row + 5});
+    }
+    checkIdentical(whole, banded);
+    CHECK(b.counters().paths == a.counters().paths);
 }

@@ -3,11 +3,14 @@
 // through io.MousePos / io.MouseDown.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <thread>
+#include <vector>
 #include <imgui.h>
 
+#include "image_io.h"
 #include "test_support.h"
 #include "viewer_run.h"
 
@@ -210,4 +213,65 @@ TEST_CASE("a target render time stops rendering once that much time is spent") {
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     for (int i = 0; i < 5; ++i) h.frame();
     CHECK(h.viewer.shownSnapshot()->paths == paths);
+}
+
+TEST_CASE("a slow step reaches the display band by band, before the step is complete") {
+    // The furnace at depth 16 and full panel resolution on one thread: the first step (one path
+    // for each of 480x720 pixels, 17 rays each) is rendered in bands, each shown when done.
+    ViewerSettings settings = smallSingleView();
+    settings.single.depth = 16;
+    settings.resolutionScale = 1.0f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    const auto& partial = h.waitFor([](const WorkerSnapshot& s) {
+        if (s.spp != 0 || s.sides.empty()) return false;
+        const auto& counts = s.sides[0].image.meanAndCount;
+        return counts[3] == 1.0f && counts[counts.size() - 1] == 0.0f;  // top row done, bottom not
+    });
+    const DisplayImage& image = partial.sides[0].image;
+    // Whole rows are done, from the top: every pixel has 0 or 1 samples, done ones above the rest.
+    int lastDoneRow = -1, firstOpenRow = image.height;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float count = image.meanAndCount[4 * (static_cast<size_t>(y) * image.width + x) + 3];
+            REQUIRE((count == 0.0f || count == 1.0f));
+            if (count == 1.0f) lastDoneRow = std::max(lastDoneRow, y);
+            if (count == 0.0f) firstOpenRow = std::min(firstOpenRow, y);
+        }
+    }
+    CHECK(lastDoneRow < firstOpenRow);
+    CHECK(lastDoneRow >= 0);
+}
+
+TEST_CASE("the save buttons write the image as displayed (PNG) and its linear radiance (EXR)") {
+    ViewerSettings settings = smallSingleView();
+    settings.targetSpp = 24;
+    Harness h(settings);
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 24; });
+    const DisplayImage& shown = done.sides.at(0).image;
+    const auto dir = test::scratchDir("viewer-save");
+    h.viewer.panel().setOutputStem((dir / "shot").string());
+    h.click("Files");  // the section starts folded
+    h.click("save PNG");
+    h.click("save EXR");
+    CHECK(h.viewer.panel().message().find("shot.exr") != std::string::npos);
+    // The EXR holds the snapshot's means exactly (32-bit float channels).
+    const Image exr = readExr(dir / "shot.exr");
+    REQUIRE(exr.width == shown.width);
+    REQUIRE(exr.height == shown.height);
+    size_t differing = 0;
+    for (size_t p = 0; p < exr.pixels.size(); ++p) {
+        for (int c = 0; c < 3; ++c) differing += exr.pixels[p][c] != shown.meanAndCount[4 * p + static_cast<size_t>(c)];
+    }
+    CHECK(differing == 0);
+    // The PNG is the render-size image, its size in the IHDR chunk (big-endian, bytes 16..23).
+    std::ifstream png(dir / "shot.png", std::ios::binary);
+    std::vector<unsigned char> header(24);
+    png.read(reinterpret_cast<char*>(header.data()), 24);
+    REQUIRE(png.gcount() == 24);
+    const auto bigEndian = [&](size_t at) {
+        return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3];
+    };
+    CHECK(header[1] == 'P');
+    CHECK(bigEndian(16) == shown.width);
+    CHECK(bigEndian(20) == shown.height);
 }

@@ -12,6 +12,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A step that takes longer than this is rendered in bands of rows, one band about this long, and
+// the display shows each band as it finishes instead of waiting for the whole step.
+constexpr double kBandSeconds = 0.05;
+constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands waste its threads
+// Bands of a job's first step, whose cost is not known yet: its first image comes sooner.
+constexpr int kFirstStepBands = 4;
+
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
            a.fovYDegrees == b.fovYDegrees;
@@ -39,6 +46,7 @@ struct RenderWorker::Job {
         bool stratified;
         AdaptiveSampling adaptive;
         double seconds = 0.0;
+        double lastStepSeconds = -1.0;  // -1: no step yet
         std::vector<ErrorSample> history;
     };
     uint64_t generation = 0;
@@ -147,7 +155,7 @@ void RenderWorker::run() {
                         AccumulationBuffer(job->camera->width(), job->camera->height()),
                         std::make_unique<ProgressiveRenderer>(config.scene->scene, *job->camera, settings),
                         stratifies(side.sampler),
-                        AdaptiveSampling({config.preview ? 0.0 : config.noiseThreshold}, pixels), 0.0, {}});
+                        AdaptiveSampling({config.preview ? 0.0 : config.noiseThreshold}, pixels), 0.0, -1.0, {}});
                 }
             } catch (const std::exception& e) {
                 job->sides.clear();
@@ -165,11 +173,21 @@ void RenderWorker::run() {
 
 bool RenderWorker::renderStep(Job& job) {
     for (auto& side : job.sides) {
-        const auto start = Clock::now();
         const uint64_t before = side.renderer->counters().paths;
         const auto* skip = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
-        side.renderer->renderStep(side.buffer, job.pass, job.step, &cancel_, skip);
-        const double seconds = secondsSince(start);
+        const int height = side.buffer.height();
+        const int wanted = side.lastStepSeconds < 0.0 ? kFirstStepBands
+                                                      : static_cast<int>(side.lastStepSeconds / kBandSeconds);
+        const int bands = std::clamp(wanted, 1, std::max(1, height / kMinBandRows));
+        double seconds = 0.0;  // rendering only, not the snapshots between bands
+        for (int band = 0; band < bands && !cancel_; ++band) {
+            const auto bandStart = Clock::now();
+            side.renderer->renderStep(side.buffer, job.pass, job.step,
+                                      {&cancel_, skip, height * band / bands, height * (band + 1) / bands});
+            seconds += secondsSince(bandStart);
+            if (band + 1 < bands && !cancel_) publish(job, false, true);
+        }
+        side.lastStepSeconds = seconds;
         side.seconds += seconds;
         totalRenderSeconds_ += seconds;
         totalPaths_ += side.renderer->counters().paths - before;
@@ -201,12 +219,12 @@ bool RenderWorker::renderStep(Job& job) {
     return true;
 }
 
-void RenderWorker::publish(const Job& job, bool idle) {
+void RenderWorker::publish(const Job& job, bool idle, bool midStep) {
     {
         std::lock_guard lock(snapshotMutex_);
         // Build a new image only when the UI has taken the last one, a pass just closed, or the
         // worker is about to rest (its last state must be shown).
-        const bool passClosed = job.step == 0;
+        const bool passClosed = job.step == 0 && !midStep;
         if (!taken_ && !passClosed && !idle) return;
     }
     auto snapshot = std::make_shared<WorkerSnapshot>();

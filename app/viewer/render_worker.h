@@ -114,7 +114,8 @@ private:
     void run();
     // False when cancelled: the job is then stale and must not be published.
     bool renderStep(Job& job);
-    void publish(const Job& job, bool idle);
+    // `midStep`: between two bands of a step, shown only if the UI took the last snapshot.
+    void publish(const Job& job, bool idle, bool midStep = false);
 
     std::mutex mutex_;  // guards config_, version_, generation_, stop_
     std::condition_variable wake_;

@@ -51,6 +51,10 @@ void ViewerPanel::setReferencePath(const std::string& path) {
     std::snprintf(referencePath_.data(), referencePath_.size(), "%s", path.c_str());
 }
 
+void ViewerPanel::setOutputStem(const std::string& stem) {
+    std::snprintf(outputStem_.data(), outputStem_.size(), "%s", stem.c_str());
+}
+
 bool ViewerPanel::sideControls(const char* label, SideConfig& side, bool depthLocked) {
     bool changed = false;
     const std::string samplerLabel = std::string(label) + "sampler";
@@ -158,15 +162,19 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
                                ImGuiSliderFlags_Logarithmic);
         }
     }
-    if (ImGui::CollapsingHeader("Files")) {
+    const bool filesOpen = ImGui::CollapsingHeader("Files");
+    remember("Files", false);
+    if (filesOpen) {
         ImGui::InputText("scene .obj", scenePath_.data(), scenePath_.size());
         actions.openScene = ImGui::Button("open scene");
         ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
         actions.loadReference = ImGui::Button("load reference");
         ImGui::InputText("save as", outputStem_.data(), outputStem_.size());
         actions.savePng = ImGui::Button("save PNG");
+        remember("save PNG", false);
         ImGui::SameLine();
         actions.saveExr = ImGui::Button("save EXR");
+        remember("save EXR", false);
     }
     if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::PopItemWidth();

@@ -58,6 +58,8 @@ public:
     std::string outputStem() const { return outputStem_.data(); }
     void setScenePath(const std::string& path);
     void setReferencePath(const std::string& path);
+    // The path (without extension) that the save buttons write to.
+    void setOutputStem(const std::string& stem);
 
     // Screen rectangle of each named control as last drawn, without its label (combo items as
     // "combo label/item"), so that scripted input (the tests) can click it.
