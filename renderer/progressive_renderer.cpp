@@ -7,6 +7,8 @@
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "error.h"
 
@@ -58,6 +60,22 @@ Body handedOff(Body body) {
 }
 void receiveHandOff() {}
 #endif
+// Sets the nice value of each thread as it joins the arena (nice values are per thread on Linux).
+class ThreadNiceness : public tbb::task_scheduler_observer {
+public:
+    ThreadNiceness(tbb::task_arena& arena, int niceness)
+        : tbb::task_scheduler_observer(arena), niceness_(niceness) {
+        observe(true);
+    }
+    ~ThreadNiceness() override { observe(false); }
+    void on_scheduler_entry(bool) override {
+        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), niceness_);  // best effort
+    }
+
+private:
+    int niceness_;
+};
+
 }  // namespace
 
 ProgressiveRenderer::ProgressiveRenderer(const Scene& scene, const Camera& camera,
@@ -72,6 +90,7 @@ ProgressiveRenderer::ProgressiveRenderer(const Scene& scene, const Camera& camer
     if (settings.integrator.depth < 0) throw Error("--depth must be at least 0");
     arena_ = settings.threads > 0 ? std::make_unique<tbb::task_arena>(settings.threads)
                                   : std::make_unique<tbb::task_arena>();
+    if (settings.niceness > 0) niceness_ = std::make_unique<ThreadNiceness>(*arena_, settings.niceness);
 }
 
 ProgressiveRenderer::~ProgressiveRenderer() = default;

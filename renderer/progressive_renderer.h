@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 #include <tbb/task_arena.h>
+#include <tbb/task_scheduler_observer.h>
 
 #include "accumulation_buffer.h"
 #include "camera.h"
@@ -25,6 +26,11 @@ struct RenderSettings {
     PathIntegratorSettings integrator;
     uint64_t seed = 0;
     int threads = 0;  // 0: all hardware threads
+    // > 0: every thread that renders runs at this Linux nice value, so that a user interface in
+    // the same process is scheduled first on a machine with few cores. The threads keep it (an
+    // unprivileged process cannot raise a thread's priority again), which suits the viewer, whose
+    // rendering all happens off its UI thread. Results do not depend on it.
+    int niceness = 0;
 };
 
 // How much of a step to render (renderStep): the viewer renders a slow step in bands of rows so
@@ -67,6 +73,7 @@ private:
     RenderSettings settings_;
     PathIntegrator integrator_;
     std::unique_ptr<tbb::task_arena> arena_;
+    std::unique_ptr<tbb::task_scheduler_observer> niceness_;  // observes arena_; declared after it
     std::atomic<uint64_t> paths_{0};
     std::atomic<uint64_t> rays_{0};
 };
