@@ -6,12 +6,12 @@
 // compare the two within 1/255); the error and sample-count views go through
 // app/viewer/false_colour.cpp's ramp, and the adaptive-mask view through its wash, mirrored here.
 
-uniform sampler2D uImage[2];
-uniform sampler2D uError[2];
+// One side's textures: the split view draws each side over its part of the viewport (scissor),
+// so a fragment samples one image, not both (llvmpipe would fetch both for a branch on the side).
+uniform sampler2D uImage;
+uniform sampler2D uError;
 uniform vec2 uViewportOrigin;   // window pixels
 uniform vec2 uViewportSize;
-uniform int uSplit;             // 1: left of uDivider shows side 0, right side 1
-uniform float uDivider;         // in [0, 1] of the viewport width
 uniform int uView;              // 0 colour, 1 relative error, 2 sample count, 3 adaptive mask
 uniform int uTonemap;           // 0 clamp, 1 reinhard, 2 aces
 uniform float uExposure;        // stops
@@ -54,9 +54,8 @@ vec3 encodeSrgb(vec3 c) {
 void main() {
     vec2 uv = (gl_FragCoord.xy - uViewportOrigin) / uViewportSize;
     uv.y = 1.0 - uv.y;  // the images' first row is the top one
-    int side = (uSplit == 1 && uv.x >= uDivider) ? 1 : 0;
-    vec4 pixel = side == 0 ? texture(uImage[0], uv) : texture(uImage[1], uv);
-    vec2 errorAndDone = side == 0 ? texture(uError[0], uv).rg : texture(uError[1], uv).rg;
+    vec4 pixel = texture(uImage, uv);
+    vec2 errorAndDone = texture(uError, uv).rg;
     float error = errorAndDone.r;
     vec3 colour;
     if (uView == 0) {

@@ -1,5 +1,7 @@
 #include "display_pipeline.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "error.h"
@@ -88,29 +90,35 @@ void DisplayPipeline::draw(const DisplaySettings& settings, const Viewport& view
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself, like renderer/tonemap.cpp
     glUseProgram(program_);
-    for (int side = 0; side < 2; ++side) {
-        glActiveTexture(GL_TEXTURE0 + 2 * side);
-        glBindTexture(GL_TEXTURE_2D, imageTextures_[side]);
-        glActiveTexture(GL_TEXTURE0 + 2 * side + 1);
-        glBindTexture(GL_TEXTURE_2D, errorTextures_[side]);
-    }
-    const GLint images[2] = {0, 2};
-    const GLint errors[2] = {1, 3};
-    glUniform1iv(glGetUniformLocation(program_, "uImage"), 2, images);
-    glUniform1iv(glGetUniformLocation(program_, "uError"), 2, errors);
+    glUniform1i(glGetUniformLocation(program_, "uImage"), 0);
+    glUniform1i(glGetUniformLocation(program_, "uError"), 1);
     glUniform2f(glGetUniformLocation(program_, "uViewportOrigin"), static_cast<float>(viewport.x),
                 static_cast<float>(viewport.y));
     glUniform2f(glGetUniformLocation(program_, "uViewportSize"), static_cast<float>(viewport.width),
                 static_cast<float>(viewport.height));
-    glUniform1i(glGetUniformLocation(program_, "uSplit"), settings.split ? 1 : 0);
-    glUniform1f(glGetUniformLocation(program_, "uDivider"), settings.divider);
     glUniform1i(glGetUniformLocation(program_, "uView"), static_cast<int>(settings.view));
     glUniform1i(glGetUniformLocation(program_, "uTonemap"), static_cast<int>(settings.tonemap));
     glUniform1f(glGetUniformLocation(program_, "uExposure"), settings.exposure);
     glUniform1f(glGetUniformLocation(program_, "uErrorScale"), settings.errorScale);
     glUniform1f(glGetUniformLocation(program_, "uSampleScale"), settings.sampleScale);
     glBindVertexArray(vertexArray_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // Split: side 1 from the first column whose centre lies at or right of the divider.
+    const int firstRight = settings.split
+        ? std::clamp(static_cast<int>(std::ceil(settings.divider * static_cast<float>(viewport.width) - 0.5f)), 0,
+                     viewport.width)
+        : viewport.width;
+    const int columns[3] = {0, firstRight, viewport.width};
+    for (int side = 0; side < 2; ++side) {
+        if (columns[side + 1] <= columns[side]) continue;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(viewport.x + columns[side], viewport.y, columns[side + 1] - columns[side], viewport.height);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, imageTextures_[side]);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, errorTextures_[side]);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);
