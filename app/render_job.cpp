@@ -69,6 +69,27 @@ std::string messageOf(std::exception_ptr failure) {
 }
 
 }  // namespace
+#else
+namespace {
+
+// The number of processes an MPI launcher started along with this one: Open MPI's mpirun sets
+// OMPI_COMM_WORLD_SIZE, MPICH's mpiexec and Slurm's PMI PMI_SIZE. 1 when started otherwise.
+int launchedProcesses() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+        if (const char* value = std::getenv(name)) return std::atoi(value);
+    }
+    return 1;
+}
+
+// This process's place among them, so that only the first one says why they all stop.
+bool firstLaunched() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK"}) {
+        if (const char* value = std::getenv(name)) return std::atoi(value) == 0;
+    }
+    return true;
+}
+
+}  // namespace
 #endif
 
 RenderJob::RenderJob() {
@@ -80,6 +101,14 @@ RenderJob::RenderJob() {
     mpi_ = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+#else
+    // Each process would render the whole image alone and they would all write the same files.
+    const int processes = launchedProcesses();
+    if (processes <= 1) return;
+    if (!firstLaunched()) throw ErrorReportedByRankZero{};
+    throw Error("this strata was built without MPI (STRATA_WITH_MPI=OFF) but was started by "
+                "mpirun with " + std::to_string(processes) +
+                " processes; rebuild with libopenmpi-dev installed, or run it without mpirun");
 #endif
 }
 

@@ -23,7 +23,9 @@ struct ErrorReportedByRankZero {};
 
 class RenderJob {
 public:
-    RenderJob();   // MPI_Init_thread when launched by an MPI launcher
+    // MPI_Init_thread when launched by an MPI launcher. A build without MPI started by one with
+    // several processes throws: each would render the whole image into the same files.
+    RenderJob();
     ~RenderJob();  // MPI_Finalize
     RenderJob(const RenderJob&) = delete;
     RenderJob& operator=(const RenderJob&) = delete;
