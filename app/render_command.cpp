@@ -74,8 +74,8 @@ void RenderCommand::run() const {
     }
 
     const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
-    const PassRange mine = dark && earlyOut ? PassRange{0, 0}
-                                            : passesOfRank(passes, job.rank(), job.ranks());
+    const uint32_t passesToRender = dark && earlyOut ? 0 : passes;
+    const PassRange mine = passesOfRank(passesToRender, job.rank(), job.ranks());
     AccumulationBuffer buffer =
         job.collectively([&] { return AccumulationBuffer(camera.width(), camera.height()); });
     ProgressiveRenderer renderer(loaded.scene, camera, settings);
@@ -89,26 +89,34 @@ void RenderCommand::run() const {
                      "all\n",
                      renderer.threadCount(), std::thread::hardware_concurrency());
     }
-    // Rank 0 reports the progress of its own passes: it has the largest share and the ranks run
-    // alike, so its share is the job's progress, but only an estimate of it; the label says so.
-    const std::string label = job.ranks() == 1
-        ? "render"
-        : "render, rank 0's share (passes " + std::to_string(mine.begin + 1) + "-" +
-              std::to_string(mine.end) + " of " + std::to_string(passes) + ")";
+    // Rank 0 reports the whole job's progress: JobProgress adds up every rank's passes.
     std::optional<ProgressReporter> progress;
-    if (job.isRoot()) progress.emplace(label, mine.size(), kPathsPerPass);
+    if (job.isRoot()) progress.emplace("render", passesToRender, kPathsPerPass);
     // Adaptive sampling (single process only: checkOptions refuses it under MPI).
     AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
-    uint32_t passesDone = 0;
-    job.collectively([&] {
-        for (uint32_t pass = mine.begin; pass < mine.end; ++pass) {
-            renderer.renderPass(buffer, pass, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
-            ++passesDone;
-            if (progress) progress->update(passesDone, renderer.counters().paths);
-            if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
+    {
+        // Made and destroyed on every rank alike, around (not in) the step that may fail on some.
+        JobProgress jobProgress(job);
+        job.collectively([&] {
+            for (uint32_t pass = mine.begin; pass < mine.end; ++pass) {
+                const uint64_t pathsBefore = renderer.counters().paths;
+                renderer.renderPass(buffer, pass,
+                                    adaptive.enabled() ? &adaptive.doneMask() : nullptr);
+                jobProgress.addPass(renderer.counters().paths - pathsBefore);
+                if (progress) {
+                    const PassTally done = jobProgress.tally();
+                    progress->update(done.passes, done.paths);
+                }
+                if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
+            }
+            jobProgress.flush();
+        });
+        if (progress) {
+            // Once the step has settled, the tally holds every rank's passes.
+            const PassTally done = jobProgress.tally();
+            if (done.passes > 0) progress->finish(done.passes, done.paths);
         }
-    });
-    if (progress && passesDone > 0) progress->finish(passesDone, renderer.counters().paths);
+    }
     RenderCounters counters = renderer.counters();
     job.reduce(buffer, counters);
     if (!job.isRoot()) return;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <new>
 #include <span>
 
 #include "error.h"
@@ -68,6 +69,27 @@ std::string messageOf(std::exception_ptr failure) {
 }
 
 }  // namespace
+#else
+namespace {
+
+// The number of processes an MPI launcher started along with this one: Open MPI's mpirun sets
+// OMPI_COMM_WORLD_SIZE, MPICH's mpiexec and Slurm's PMI PMI_SIZE. 1 when started otherwise.
+int launchedProcesses() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+        if (const char* value = std::getenv(name)) return std::atoi(value);
+    }
+    return 1;
+}
+
+// This process's place among them, so that only the first one says why they all stop.
+bool firstLaunched() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK"}) {
+        if (const char* value = std::getenv(name)) return std::atoi(value) == 0;
+    }
+    return true;
+}
+
+}  // namespace
 #endif
 
 RenderJob::RenderJob() {
@@ -79,6 +101,14 @@ RenderJob::RenderJob() {
     mpi_ = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+#else
+    // Each process would render the whole image alone and they would all write the same files.
+    const int processes = launchedProcesses();
+    if (processes <= 1) return;
+    if (!firstLaunched()) throw ErrorReportedByRankZero{};
+    throw Error("this strata was built without MPI (STRATA_WITH_MPI=OFF) but was started by "
+                "mpirun with " + std::to_string(processes) +
+                " processes; rebuild with libopenmpi-dev installed, or run it without mpirun");
 #endif
 }
 
@@ -158,6 +188,74 @@ void RenderJob::reduce([[maybe_unused]] AccumulationBuffer& buffer,
     reduceToRoot(std::span<uint64_t>(totals), MPI_UINT64_T, isRoot());
     counters = {totals[0], totals[1]};
 #endif
+}
+
+// Rank 0's PassTally, as two uint64 (passes, paths) in an MPI window; the other ranks expose none.
+struct JobProgress::Window {
+#if STRATA_WITH_MPI
+    MPI_Win handle = MPI_WIN_NULL;
+#endif
+};
+
+JobProgress::JobProgress(const RenderJob& job) {
+    if (!job.underMpi()) return;
+#if STRATA_WITH_MPI
+    static_assert(sizeof(PassTally) == 2 * sizeof(uint64_t));
+    window_ = std::make_unique<Window>();
+    void* memory = nullptr;
+    MPI_Win_allocate(job.isRoot() ? sizeof(PassTally) : 0, sizeof(uint64_t), MPI_INFO_NULL,
+                     MPI_COMM_WORLD, &memory, &window_->handle);
+    if (job.isRoot()) new (memory) PassTally{};
+    // One shared lock on every rank for the tally's whole life (no rank ever locks exclusively):
+    // adding a pass is then a lone accumulate, and the render loop has no collective call in it.
+    MPI_Win_lock_all(MPI_MODE_NOCHECK, window_->handle);
+    // Rank 0's zeros are in the window before any rank adds to them.
+    MPI_Win_sync(window_->handle);
+    MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+JobProgress::~JobProgress() {
+#if STRATA_WITH_MPI
+    if (!window_) return;
+    MPI_Win_unlock_all(window_->handle);
+    MPI_Win_free(&window_->handle);
+#endif
+}
+
+void JobProgress::addPass(uint64_t paths) {
+    if (!window_) {
+        own_ = {own_.passes + 1, own_.paths + paths};
+        return;
+    }
+#if STRATA_WITH_MPI
+    const uint64_t pass[2] = {1, paths};
+    MPI_Accumulate(pass, 2, MPI_UINT64_T, 0, 0, 2, MPI_UINT64_T, MPI_SUM, window_->handle);
+    // Local completion only (`pass` may go). A full MPI_Win_flush would wait for rank 0 to apply
+    // the sum, and where rank 0 does that in its own MPI calls (Open MPI 4.1's osc/pt2pt, its
+    // one-sided transport over TCP between hosts) that is when rank 0 ends its current pass: with
+    // a flush per pass, 2 ranks over TCP took 4.1-6.8 s instead of 3.4-3.9 s for the Cornell box
+    // at 128x128, 240 spp.
+    MPI_Win_flush_local(0, window_->handle);
+#endif
+}
+
+void JobProgress::flush() {
+#if STRATA_WITH_MPI
+    if (window_) MPI_Win_flush(0, window_->handle);
+#endif
+}
+
+PassTally JobProgress::tally() {
+    if (!window_) return own_;
+    uint64_t total[2] = {0, 0};
+#if STRATA_WITH_MPI
+    // An atomic read: the other ranks' accumulates may land at any moment.
+    MPI_Get_accumulate(nullptr, 0, MPI_UINT64_T, total, 2, MPI_UINT64_T, 0, 0, 2, MPI_UINT64_T,
+                       MPI_NO_OP, window_->handle);
+    MPI_Win_flush(0, window_->handle);
+#endif
+    return {total[0], total[1]};
 }
 
 }  // namespace strata

@@ -3,8 +3,10 @@
 // MPI launcher (mpirun, srun) and built with STRATA_WITH_MPI, else this one process as a job of one
 // rank, for which every call below is the plain single-process behaviour. All the MPI glue lives in
 // render_job.cpp, so the render command is written once for both.
+#include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -21,7 +23,9 @@ struct ErrorReportedByRankZero {};
 
 class RenderJob {
 public:
-    RenderJob();   // MPI_Init_thread when launched by an MPI launcher
+    // MPI_Init_thread when launched by an MPI launcher. A build without MPI started by one with
+    // several processes throws: each would render the whole image into the same files.
+    RenderJob();
     ~RenderJob();  // MPI_Finalize
     RenderJob(const RenderJob&) = delete;
     RenderJob& operator=(const RenderJob&) = delete;
@@ -54,6 +58,40 @@ private:
     int rank_ = 0;
     int ranks_ = 1;
     bool mpi_ = false;
+};
+
+// The passes rendered so far and their paths, for progress.
+struct PassTally {
+    uint64_t passes = 0;
+    uint64_t paths = 0;
+};
+
+// The whole job's progress, for rank 0's progress bar: every rank adds each pass it finishes to a
+// tally that rank 0 holds in an MPI window (one-sided, so no rank waits for another's passes).
+// One process: the tally of its own passes. Making and destroying it are collective under MPI, so
+// do both at the same point on every rank and outside any `collectively` step: a step may fail
+// on some ranks only, but `collectively` then throws on all of them, and the tally's destructor
+// runs on every rank alike.
+class JobProgress {
+public:
+    explicit JobProgress(const RenderJob& job);
+    ~JobProgress();
+    JobProgress(const JobProgress&) = delete;
+    JobProgress& operator=(const JobProgress&) = delete;
+
+    // Counts one finished pass of this rank that traced `paths` paths, without waiting for rank 0:
+    // the pass may reach rank 0's tally only once rank 0 next calls MPI.
+    void addPass(uint64_t paths);
+    // Waits until every pass this rank added is in rank 0's tally. Called by each rank after its
+    // last pass of a `collectively` step, so that once the step has settled the tally is complete.
+    void flush();
+    // What all ranks have counted so far (as far as it has reached rank 0).
+    PassTally tally();
+
+private:
+    struct Window;                    // rank 0's tally, defined in render_job.cpp
+    std::unique_ptr<Window> window_;  // null when not under MPI
+    PassTally own_;
 };
 
 template <typename Step>

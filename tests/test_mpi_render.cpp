@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "image_io.h"
@@ -33,12 +34,22 @@ size_t occurrences(const std::string& text, const std::string& part) {
     return count;
 }
 
+// The last line of `text` that starts with `prefix`, "" when there is none.
+std::string lastLineStartingWith(const std::string& text, const std::string& prefix) {
+    std::istringstream lines(text);
+    std::string last;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.starts_with(prefix)) last = line;
+    }
+    return last;
+}
+
 }  // namespace
 
 // Why not bit-identical, and this bound: app/render_job.cpp, RenderJob::reduce. Each double sum
 // differs from the single process's by at most 2*gamma_{n-1} (5.3e-14 relative at 120 spp), so
 // each float pixel channel is the same float or the next one up or down.
-TEST_CASE("mpi render: 2 ranks give the single-process image") {
+TEST_CASE("mpi render: 2 ranks give the single-process image and the job's progress") {
     const auto dir = test::scratchDir("mpi-equal");
     // 5 passes: rank 0 renders 3, rank 1 renders 2.
     const std::string arguments = "render " + cornell() +
@@ -52,6 +63,9 @@ TEST_CASE("mpi render: 2 ranks give the single-process image") {
     CHECK(occurrences(distributed.out, "\"paths\":") == 1);  // one report, from rank 0
     CHECK(distributed.out.find("\"paths\":57600,") != std::string::npos);  // 24*20*120: all ranks
     CHECK(occurrences(distributed.err, "wrote ") == 1);
+    // Rank 0's progress counts every rank's passes: its own 3 alone would end at pass 3/3.
+    CHECK(lastLineStartingWith(distributed.err, "render: pass ")
+              .starts_with("render: pass 5/5, 120 spp,"));
 
     const Image a = readExr(dir / "single.exr");
     const Image b = readExr(dir / "mpi.exr");
