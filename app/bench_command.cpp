@@ -11,6 +11,7 @@
 #include "bench_convergence.h"
 #include "bench_output.h"
 #include "bench_peer.h"
+#include "bench_ranks.h"
 #include "bench_throughput.h"
 #include "direction_sampler.h"
 #include "error.h"
@@ -176,6 +177,14 @@ void BenchCommand::run() const {
         peer.threads = threads;
         peer.outDir = out;
         summary += runPeerComparison(peer);
+    }
+    if (!quick) {
+        RankSettings ranks;
+        ranks.scene = root / "assets" / "cornell" / "cornell.obj";
+        ranks.depth = depths.front();
+        ranks.threads = threads;
+        ranks.outDir = out;
+        summary += runRankComparison(ranks);
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

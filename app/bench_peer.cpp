@@ -1,57 +1,22 @@
 #include "bench_peer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <fcntl.h>
 #include <fstream>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <tbb/info.h>
 #include <vector>
 
 #include "bench_output.h"
+#include "bench_process.h"
 #include "camera.h"
 #include "error.h"
 #include "image_io.h"
 #include "progress.h"
 
-extern char** environ;
-
 namespace strata {
 namespace {
 
 constexpr const char* kEmbreePathTracer = "pathtracer";
-
-struct Timing {
-    double wall = -1.0;  // negative: the program failed
-    double cpu = 0.0;    // user + system CPU seconds of the child
-};
-
-// Runs argv (stdout and stderr to `log`), timed.
-Timing runTimed(std::vector<std::string> args, const std::filesystem::path& log) {
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    const auto start = std::chrono::steady_clock::now();
-    pid_t pid = 0;
-    const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return {};
-    int status = 0;
-    rusage usage{};
-    wait4(pid, &status, 0, &usage);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
-    const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime)};
-}
 
 // Mean of an 8-bit binary PPM (P6) as values in [0, 1] per channel.
 double ppmMean(const std::filesystem::path& path) {
@@ -83,11 +48,6 @@ std::pair<double, double> exrMeans(const std::filesystem::path& path) {
     }
     const double n = 3.0 * image.pixels.size();
     return {sum / n, clamped / n};
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 std::string number(double v) { return cell("%.9g", v); }
@@ -136,7 +96,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         // Alternate which goes first so that neither always runs on a warmer machine.
         for (int k = 0; k < 2; ++k) {
             const bool strataTurn = (r + k) % 2 == 0;
-            const Timing t = runTimed(strataTurn ? strataArgs : embreeArgs, log);
+            const ProcessTiming t = runTimed(strataTurn ? strataArgs : embreeArgs, log);
             if (t.wall < 0.0) {
                 return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" +
                        std::string(strataTurn ? "strata render" : kEmbreePathTracer) +

@@ -22,9 +22,4 @@ size_t AdaptiveSampling::update(const AccumulationBuffer& buffer) {
     return active_;
 }
 
-void AdaptiveSampling::reset() {
-    std::fill(done_.begin(), done_.end(), 0);
-    active_ = done_.size();
-}
-
 }  // namespace strata

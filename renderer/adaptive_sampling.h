@@ -30,7 +30,6 @@ public:
     // 1 for pixels that receive no more passes; indexable by pixel.
     const std::vector<uint8_t>& doneMask() const { return done_; }
     size_t activePixels() const { return active_; }
-    void reset();
 
 private:
     AdaptiveSettings settings_;

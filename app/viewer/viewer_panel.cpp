@@ -91,13 +91,16 @@ void ViewerPanel::truncationControls(ViewerSettings& settings, const Scene& scen
     if (!settings.depthFromEpsilon) return;
     try {
         const TruncationChoice choice = chooseSceneTruncationDepth(settings.epsilon, scene);
-        for (SideConfig* side : {&settings.single, &settings.halves[0], &settings.halves[1]}) {
-            side->depth = std::min(choice.depth, kMaxDepth);
-        }
+        const int depth = std::min(choice.depth, kMaxDepth);  // the sliders' range
+        for (SideConfig* side : {&settings.single, &settings.halves[0], &settings.halves[1]}) side->depth = depth;
         const SceneSummary& summary = scene.summary();
-        ImGui::TextWrapped("K_eps = %d%s, bound %.2e (max albedo %.3g, max Le %.3g)", choice.depth,
-                           choice.depth > kMaxDepth ? " (capped at 64)" : "", choice.bound,
-                           static_cast<double>(summary.maxAlbedo), static_cast<double>(summary.maxEmission));
+        if (depth < choice.depth) {
+            ImGui::TextWrapped("K_eps = %d is beyond the viewer's %d: rendering at %d, bound %.2e", choice.depth,
+                               kMaxDepth, depth, truncationBound(depth, summary.maxAlbedo, summary.maxEmission));
+        } else {
+            ImGui::TextWrapped("K_eps = %d, bound %.2e (max albedo %.3g, max Le %.3g)", choice.depth, choice.bound,
+                               static_cast<double>(summary.maxAlbedo), static_cast<double>(summary.maxEmission));
+        }
     } catch (const std::exception& e) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.2f, 1));
         ImGui::TextWrapped("no K_eps: %s", e.what());
