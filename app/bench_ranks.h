@@ -13,7 +13,7 @@ struct RankSettings {
     int depth = 5;
     int width = 256;
     int height = 256;
-    int spp = 120;
+    int spp = 240;  // 10 passes: the 2 ranks get 5 each
     int repeats = 3;
     int threads = 0;  // 0: all cores
     std::filesystem::path outDir;
