@@ -73,7 +73,7 @@ TEST_CASE("display shader matches the CPU tonemap within 1/255") {
             expected[p] = y == 5 ? glm::vec3(0.0f) : value;
         }
     }
-    pipeline.upload(0, image);
+    pipeline.upload(0, image, DisplayView::Colour);
     for (Tonemap tonemap : {Tonemap::Clamp, Tonemap::Reinhard, Tonemap::Aces}) {
         for (float exposure : {0.0f, -1.5f, 2.0f}) {
             CAPTURE(tonemapName(tonemap));
@@ -103,8 +103,8 @@ TEST_CASE("split view shows each side on its side of the divider") {
         setPixel(left, p, glm::vec3(1.0f, 0.0f, 0.0f), 24.0f);
         setPixel(right, p, glm::vec3(0.0f, 0.0f, 1.0f), 24.0f);
     }
-    pipeline.upload(0, left);
-    pipeline.upload(1, right);
+    pipeline.upload(0, left, DisplayView::Colour);
+    pipeline.upload(1, right, DisplayView::Colour);
     for (float divider : {0.0f, 0.25f, 0.5f, 0.9f}) {
         CAPTURE(divider);
         DisplaySettings settings;
@@ -145,7 +145,7 @@ TEST_CASE("error and sample-count views map known values to the false-colour ram
     CHECK(falseColour(0.5f).y == doctest::Approx(0.80f));
     CHECK(falseColour(1.0f).x == doctest::Approx(1.00f));
     CHECK(falseColour(0.125f).y == doctest::Approx(0.5f * (0.05f + 0.45f)));
-    pipeline.upload(0, image);
+    pipeline.upload(0, image, DisplayView::RelativeError);
     DisplaySettings settings;
     settings.errorScale = kErrorScale;
     settings.sampleScale = kSampleScale;
@@ -173,7 +173,7 @@ TEST_CASE("the adaptive-mask view washes done pixels green and leaves the others
     for (int x = 0; x < kWidth; ++x) {
         setPixel(image, static_cast<size_t>(x), glm::vec3(0.1f * static_cast<float>(x)), 24.0f, 0.0f, x % 2 == 1);
     }
-    pipeline.upload(0, image);
+    pipeline.upload(0, image, DisplayView::AdaptiveMask);
     DisplaySettings settings;
     settings.view = DisplayView::AdaptiveMask;
     const auto pixels = display(pipeline, settings, kWidth, kHeight);

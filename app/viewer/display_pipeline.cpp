@@ -10,9 +10,10 @@
 namespace strata::viewer {
 namespace {
 
-GLuint compileShader(GLenum stage, const char* source, const char* name) {
+GLuint compileShader(GLenum stage, const std::string& source, const char* name) {
     const GLuint shader = glCreateShader(stage);
-    glShaderSource(shader, 1, &source, nullptr);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -23,6 +24,35 @@ GLuint compileShader(GLenum stage, const char* source, const char* name) {
         throw Error(std::string("shaders/") + name + ": does not compile: " + log.c_str());
     }
     return shader;
+}
+
+// display.frag with STRATA_VIEW defined: the definition goes after the #version line, which must
+// come first.
+std::string fragmentSourceFor(DisplayView view) {
+    const std::string source = kDisplayFragmentShader;
+    const size_t afterVersion = source.find('\n') + 1;
+    return source.substr(0, afterVersion) + "#define STRATA_VIEW " + std::to_string(static_cast<int>(view)) +
+           "\n" + source.substr(afterVersion);
+}
+
+GLuint linkProgram(DisplayView view) {
+    const GLuint vertex = compileShader(GL_VERTEX_SHADER, kDisplayVertexShader, "display.vert");
+    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, fragmentSourceFor(view), "display.frag");
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, vertex);
+    glAttachShader(program, fragment);
+    glLinkProgram(program);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        std::string log(4096, '\0');
+        glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+        glDeleteProgram(program);
+        throw Error(std::string("shaders/display: does not link: ") + log.c_str());
+    }
+    return program;
 }
 
 GLuint makeTexture() {
@@ -42,21 +72,11 @@ GLuint makeTexture() {
 }  // namespace
 
 DisplayPipeline::DisplayPipeline() {
-    const GLuint vertex = compileShader(GL_VERTEX_SHADER, kDisplayVertexShader, "display.vert");
-    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, kDisplayFragmentShader, "display.frag");
-    program_ = glCreateProgram();
-    glAttachShader(program_, vertex);
-    glAttachShader(program_, fragment);
-    glLinkProgram(program_);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        std::string log(4096, '\0');
-        glGetProgramInfoLog(program_, static_cast<GLsizei>(log.size()), nullptr, log.data());
-        glDeleteProgram(program_);
-        throw Error(std::string("shaders/display: does not link: ") + log.c_str());
+    try {
+        for (int view = 0; view < kViews; ++view) programs_[view] = linkProgram(static_cast<DisplayView>(view));
+    } catch (...) {
+        for (GLuint program : programs_) glDeleteProgram(program);  // the unlinked ones are 0: a no-op
+        throw;
     }
     glGenVertexArrays(1, &vertexArray_);  // core profile draws need one, even without attributes
     for (int side = 0; side < 2; ++side) {
@@ -69,15 +89,20 @@ DisplayPipeline::~DisplayPipeline() {
     glDeleteTextures(2, imageTextures_.data());
     glDeleteTextures(2, errorTextures_.data());
     glDeleteVertexArrays(1, &vertexArray_);
-    glDeleteProgram(program_);
+    for (GLuint program : programs_) glDeleteProgram(program);
 }
 
-void DisplayPipeline::upload(int side, const DisplayImage& image) {
+bool DisplayPipeline::readsError(DisplayView view) {
+    return view == DisplayView::RelativeError || view == DisplayView::AdaptiveMask;
+}
+
+void DisplayPipeline::upload(int side, const DisplayImage& image, DisplayView view) {
     if (image.width < 1 || image.height < 1) return;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, imageTextures_.at(side));
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
                  image.meanAndCount.data());
+    if (!readsError(view)) return;
     glBindTexture(GL_TEXTURE_2D, errorTextures_.at(side));
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, image.width, image.height, 0, GL_RG, GL_FLOAT,
                  image.errorAndDone.data());
@@ -89,18 +114,18 @@ void DisplayPipeline::draw(const DisplaySettings& settings, const Viewport& view
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself, like renderer/tonemap.cpp
-    glUseProgram(program_);
-    glUniform1i(glGetUniformLocation(program_, "uImage"), 0);
-    glUniform1i(glGetUniformLocation(program_, "uError"), 1);
-    glUniform2f(glGetUniformLocation(program_, "uViewportOrigin"), static_cast<float>(viewport.x),
+    const GLuint program = programs_.at(static_cast<size_t>(settings.view));
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "uImage"), 0);
+    glUniform1i(glGetUniformLocation(program, "uError"), 1);
+    glUniform2f(glGetUniformLocation(program, "uViewportOrigin"), static_cast<float>(viewport.x),
                 static_cast<float>(viewport.y));
-    glUniform2f(glGetUniformLocation(program_, "uViewportSize"), static_cast<float>(viewport.width),
+    glUniform2f(glGetUniformLocation(program, "uViewportSize"), static_cast<float>(viewport.width),
                 static_cast<float>(viewport.height));
-    glUniform1i(glGetUniformLocation(program_, "uView"), static_cast<int>(settings.view));
-    glUniform1i(glGetUniformLocation(program_, "uTonemap"), static_cast<int>(settings.tonemap));
-    glUniform1f(glGetUniformLocation(program_, "uExposure"), settings.exposure);
-    glUniform1f(glGetUniformLocation(program_, "uErrorScale"), settings.errorScale);
-    glUniform1f(glGetUniformLocation(program_, "uSampleScale"), settings.sampleScale);
+    glUniform1i(glGetUniformLocation(program, "uTonemap"), static_cast<int>(settings.tonemap));
+    glUniform1f(glGetUniformLocation(program, "uExposure"), settings.exposure);
+    glUniform1f(glGetUniformLocation(program, "uErrorScale"), settings.errorScale);
+    glUniform1f(glGetUniformLocation(program, "uSampleScale"), settings.sampleScale);
     glBindVertexArray(vertexArray_);
     // Split: side 1 from the first column whose centre lies at or right of the divider.
     const int firstRight = settings.split

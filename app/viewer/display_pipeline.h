@@ -37,13 +37,20 @@ public:
     DisplayPipeline(const DisplayPipeline&) = delete;
     DisplayPipeline& operator=(const DisplayPipeline&) = delete;
 
-    // Uploads side 0 or 1's image (resizing its textures when the size changed).
-    void upload(int side, const DisplayImage& image);
-    // Draws into the bound framebuffer's `viewport`.
+    // Uploads side 0 or 1's image for `view` (resizing its textures when the size changed): its
+    // error texture only if the view reads it. The colour view does not, and skipping it saves a
+    // third of the upload.
+    void upload(int side, const DisplayImage& image, DisplayView view);
+    // Draws into the bound framebuffer's `viewport`. The images must have been uploaded for
+    // `settings.view`.
     void draw(const DisplaySettings& settings, const Viewport& viewport) const;
 
+    static bool readsError(DisplayView view);
+
 private:
-    GLuint program_ = 0;
+    static constexpr int kViews = 4;
+    // One program per DisplayView (shaders/display.frag's STRATA_VIEW).
+    std::array<GLuint, kViews> programs_{};
     GLuint vertexArray_ = 0;
     std::array<GLuint, 2> imageTextures_{};
     std::array<GLuint, 2> errorTextures_{};

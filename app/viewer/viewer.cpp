@@ -82,12 +82,7 @@ void Viewer::frame(const FrameTarget& target) {
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
 
-    if (auto latest = worker_.latest(); latest && latest != shown_) {
-        for (size_t side = 0; side < latest->sides.size(); ++side) {
-            pipeline_.upload(static_cast<int>(side), latest->sides[side].image);
-        }
-        shown_ = std::move(latest);
-    }
+    if (auto latest = worker_.latest(); latest && latest != shown_) shown_ = std::move(latest);
 
     const PanelActions actions = panel_.draw(settings_, shown_.get(), scene_->scene);
     handleDivider(io, target);
@@ -141,11 +136,18 @@ void Viewer::updateImage(const DisplaySettings& display) {
     const DisplayImage& image = shown_->sides[0].image;
     if (image.width < 1 || image.height < 1) return;
     const bool resized = !image_ || image_->width() != image.width || image_->height() != image.height;
-    if (!resized && imageSnapshot_ == shown_.get() && imageSettings_ == display) return;
+    if (!resized && imageSnapshot_ == shown_ && imageSettings_ == display) return;
+    // A new snapshot, or a view that reads the error textures this snapshot's upload skipped.
+    if (imageSnapshot_ != shown_ ||
+        (DisplayPipeline::readsError(display.view) && !DisplayPipeline::readsError(imageSettings_.view))) {
+        for (size_t side = 0; side < shown_->sides.size(); ++side) {
+            pipeline_.upload(static_cast<int>(side), shown_->sides[side].image, display.view);
+        }
+    }
     if (resized) image_.emplace(FrameTarget::offscreen(image.width, image.height));
     image_->bind();
     pipeline_.draw(display, Viewport{0, 0, image.width, image.height});
-    imageSnapshot_ = shown_.get();
+    imageSnapshot_ = shown_;
     imageSettings_ = display;
 }
 

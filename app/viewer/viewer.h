@@ -42,9 +42,9 @@ private:
     void handleDivider(const ImGuiIO& io, const FrameTarget& target);
     void drawOverlays(const FrameTarget& target);
     void applyActions(const PanelActions& actions);
-    // The displayed image at its render size, redrawn only when the snapshot or the display
-    // settings change: the display shader runs over the image's pixels, not the window's, and
-    // not every frame (llvmpipe's cost per frame is what keeps the UI responsive).
+    // The displayed image at its render size, uploaded and redrawn only when the snapshot or the
+    // display settings change: the display shader runs over the image's pixels, not the window's,
+    // and not every frame (llvmpipe's cost per frame is what keeps the UI responsive).
     void updateImage(const DisplaySettings& display);
     void savePng(const std::filesystem::path& path);
     void saveExr(const std::filesystem::path& stem);
@@ -57,7 +57,8 @@ private:
     DisplayPipeline pipeline_;
     std::shared_ptr<const WorkerSnapshot> shown_;
     std::optional<FrameTarget> image_;
-    const WorkerSnapshot* imageSnapshot_ = nullptr;
+    // Held, not just pointed to: a freed snapshot's address may come back as the next one's.
+    std::shared_ptr<const WorkerSnapshot> imageSnapshot_;
     DisplaySettings imageSettings_;
     WorkerConfig configured_;
     bool everConfigured_ = false;
