@@ -99,20 +99,23 @@ int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency();
 
 void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
                                      const std::vector<uint8_t>* skip) {
-    render(buffer, pass, 0, kPathsPerPass, StepControl{nullptr, skip});
+    renderSteps(buffer, pass, 0, kPathsPerPass, StepControl{nullptr, skip});
 }
 
 void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
                                      const StepControl& control) {
-    render(buffer, pass, step, step + 1, control);
+    renderSteps(buffer, pass, step, step + 1, control);
 }
 
-void ProgressiveRenderer::render(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
-                                 int endStep, const StepControl& control) {
+void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
+                                      int endStep, const StepControl& control) {
     const int width = camera_.width();
     const int height = camera_.height();
     if (buffer.width() != width || buffer.height() != height) {
         throw Error("accumulation buffer and camera differ in size");
+    }
+    if (firstStep < 0 || firstStep >= endStep || endStep > kPathsPerPass) {
+        throw Error("renderSteps: bad step range");
     }
     const int endRow = control.endRow < 0 ? height : std::min(control.endRow, height);
     if (control.firstRow < 0 || control.firstRow > endRow) throw Error("renderStep: bad row range");

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "accumulation_buffer.h"
+#include "error.h"
 #include "progressive_renderer.h"
 #include "scene_loader.h"
 #include "test_support.h"
@@ -95,4 +96,25 @@ TEST_CASE("renderer: a step rendered in bands of rows equals the step at once") 
     }
     checkIdentical(whole, banded);
     CHECK(b.counters().paths == a.counters().paths);
+}
+
+TEST_CASE("renderer: a pass in groups of steps equals the pass step by step") {
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const Camera camera(loaded.settings.pose, 19, 13);
+    const RenderSettings settings{{3, SamplerKind::Strata24, false}, 91, 2};
+    AccumulationBuffer stepwise(19, 13), grouped(19, 13);
+    ProgressiveRenderer a(loaded.scene, camera, settings), b(loaded.scene, camera, settings);
+    for (int step = 0; step < kPathsPerPass; ++step) a.renderStep(stepwise, 0, step);
+    // Uneven groups, as the viewer's worker chooses them from the time a step takes.
+    const int groupEnds[] = {1, 6, 17, 24};
+    int first = 0;
+    for (int end : groupEnds) {
+        CHECK(grouped.completedPasses(0) == 0u);  // the pass closes with its last step only
+        b.renderSteps(grouped, 0, first, end);
+        first = end;
+    }
+    checkIdentical(stepwise, grouped);
+    CHECK(grouped.completedPasses(0) == 1u);
+    CHECK_THROWS_AS(b.renderSteps(grouped, 1, 5, 5), Error);
+    CHECK_THROWS_AS(b.renderSteps(grouped, 1, 20, 25), Error);
 }

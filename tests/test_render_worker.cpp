@@ -1,5 +1,6 @@
-// The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat, and
-// raising the target spp continues the same accumulation instead of restarting it.
+// The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat,
+// raising the target spp continues the same accumulation instead of restarting it, and steps
+// rendered several at a time stop exactly at a target spp inside a pass.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -74,8 +75,32 @@ TEST_CASE("render worker: memory stays flat over 10^4 passes, and a higher targe
     CHECK(done->generation == warm->generation);  // the same accumulation went on
     CHECK(done->passes == 10000);
     CHECK(done->sides.at(0).history.size() == 10000 - 1);  // one error point a pass from the 2nd
-    // What may grow: that error history (24 bytes a pass, 235 KB here). Anything per step or per
-    // snapshot that leaked would be megabytes over these 235200 steps and 9800 snapshots.
+    // What may grow: that error history (24 bytes a pass, 235 KB here). Anything per render call
+    // or per snapshot that leaked would be megabytes over these 9800 passes.
     INFO("resident " << before << " KB after 200 passes, " << after << " KB after 10000");
     if (kResidentMemoryIsOurs) CHECK(after - before < 2048);
+}
+
+TEST_CASE("render worker: steps rendered several at once stop exactly at a target inside a pass") {
+    // After its first pass the worker renders fast steps several at a time; a target that is not
+    // a whole number of passes must still be met exactly, the image's samples those of the steps.
+    const auto scene = std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/furnace/furnace.obj"));
+    RenderWorker worker;
+    WorkerConfig config;
+    config.scene = scene;
+    config.pose = scene->settings.pose;
+    config.width = 6;
+    config.height = 5;
+    config.sides = {SideConfig{SamplerKind::Strata24, 2}};
+    config.threads = 1;
+    for (uint32_t target : {24u * 3 + 5, 24u * 7 + 23, 24u * 9}) {
+        CAPTURE(target);
+        config.targetSpp = target;
+        worker.configure(config);
+        const auto done = restAt(worker, target);
+        CHECK(done->passes == target / 24);
+        CHECK(done->paths == uint64_t{target} * 6 * 5);
+        const auto& counts = done->sides.at(0).image.meanAndCount;
+        for (size_t p = 0; p < counts.size() / 4; ++p) CHECK(counts[4 * p + 3] == static_cast<float>(target));
+    }
 }

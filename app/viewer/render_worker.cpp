@@ -22,6 +22,11 @@ constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands w
 constexpr int kRenderNiceness = 5;
 // Bands of a job's first step, whose cost is not known yet: its first image comes sooner.
 constexpr int kFirstStepBands = 4;
+// After the first pass a step changes the image little, and a snapshot for every step (each one
+// built here, uploaded and drawn by the UI) cost the viewer 10% of its throughput at 640x360,
+// where a step takes 48 ms. From the second pass on, snapshots come at most this often, and at
+// every pass's end; fast steps are rendered as many at once as take about this long.
+constexpr double kLaterPassSnapshotSeconds = 0.25;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
@@ -30,6 +35,16 @@ bool samePose(const CameraPose& a, const CameraPose& b) {
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The steps the next renderSteps call renders: one in the first pass, which the display shows
+// step by step, and while a step is slow (it is split in bands instead); later, as many as take
+// about kLaterPassSnapshotSeconds, within the pass and the target spp.
+int stepsAtOnce(uint32_t pass, int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) {
+    if (pass == 0 || stepSeconds <= 0.0) return 1;
+    int steps = std::clamp(static_cast<int>(kLaterPassSnapshotSeconds / stepSeconds), 1, kPathsPerPass - step);
+    if (targetSpp > spp) steps = std::min(steps, static_cast<int>(targetSpp - spp));
+    return steps;
 }
 
 }  // namespace
@@ -173,33 +188,38 @@ void RenderWorker::run() {
             publish(*job, true);
             continue;
         }
-        if (renderStep(*job)) publish(*job, false);
+        if (renderSteps(*job, config.targetSpp)) publish(*job, false);
     }
 }
 
-bool RenderWorker::renderStep(Job& job) {
+bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
+    double stepSeconds = 0.0;  // all sides, one step
+    for (const auto& side : job.sides) stepSeconds += std::max(0.0, side.lastStepSeconds);
+    const int steps = stepsAtOnce(job.pass, job.step, stepSeconds, job.spp(), targetSpp);
     for (auto& side : job.sides) {
         const uint64_t before = side.renderer->counters().paths;
         const auto* skip = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
         const int height = side.buffer.height();
-        const int wanted = side.lastStepSeconds < 0.0 ? kFirstStepBands
-                                                      : static_cast<int>(side.lastStepSeconds / kBandSeconds);
+        const int wanted = side.lastStepSeconds < 0.0
+                               ? kFirstStepBands
+                               : static_cast<int>(side.lastStepSeconds * steps / kBandSeconds);
         const int bands = std::clamp(wanted, 1, std::max(1, height / kMinBandRows));
         double seconds = 0.0;  // rendering only, not the snapshots between bands
         for (int band = 0; band < bands && !cancel_; ++band) {
             const auto bandStart = Clock::now();
-            side.renderer->renderStep(side.buffer, job.pass, job.step,
-                                      {&cancel_, skip, height * band / bands, height * (band + 1) / bands});
+            side.renderer->renderSteps(side.buffer, job.pass, job.step, job.step + steps,
+                                       {&cancel_, skip, height * band / bands, height * (band + 1) / bands});
             seconds += secondsSince(bandStart);
             if (band + 1 < bands && !cancel_) publish(job, false, true);
         }
-        side.lastStepSeconds = seconds;
+        side.lastStepSeconds = seconds / steps;
         side.seconds += seconds;
         totalRenderSeconds_ += seconds;
         totalPaths_ += side.renderer->counters().paths - before;
         if (cancel_) return false;
     }
-    if (++job.step < kPathsPerPass) return true;
+    job.step += steps;
+    if (job.step < kPathsPerPass) return true;
     job.step = 0;
     ++job.pass;
     // The mask changes only between passes, so every pixel's passes stay complete.
@@ -228,11 +248,14 @@ bool RenderWorker::renderStep(Job& job) {
 void RenderWorker::publish(const Job& job, bool idle, bool midStep) {
     {
         std::lock_guard lock(snapshotMutex_);
-        // Build a new image only when the UI has taken the last one, a pass just closed, or the
-        // worker is about to rest (its last state must be shown).
+        // Build a new image only when a pass just closed, or the worker is about to rest (its
+        // last state must be shown), or else the UI has taken the last one and, after the first
+        // pass, the last one is old enough.
         const bool passClosed = job.step == 0 && !midStep;
-        if (!taken_ && !passClosed && !idle) return;
+        const bool due = taken_ && (job.pass == 0 || secondsSince(lastPublish_) >= kLaterPassSnapshotSeconds);
+        if (!passClosed && !idle && !due) return;
     }
+    lastPublish_ = Clock::now();
     auto snapshot = std::make_shared<WorkerSnapshot>();
     snapshot->generation = job.generation;
     snapshot->preview = job.preview;

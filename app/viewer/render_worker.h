@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's render thread. It drives ProgressiveRenderer::renderStep (a pass = 24 steps of one
+// The viewer's render thread. It drives ProgressiveRenderer::renderSteps (a pass = 24 steps of one
 // path per pixel) for one or two configurations of the same camera (the split view's sides, step
 // for step, so both always hold equal samples) and publishes snapshots for the UI thread, which
 // only ever takes the latest one under a short lock: it never waits for a step or a pass.
@@ -7,6 +7,7 @@
 // (spp, render time, or every pixel under the noise threshold) or a pause blocks the thread on a
 // condition variable (no CPU) until something changes.
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -112,8 +113,9 @@ public:
 private:
     struct Job;
     void run();
-    // False when cancelled: the job is then stale and must not be published.
-    bool renderStep(Job& job);
+    // Renders the job's next step, or several (stepsAtOnce in render_worker.cpp). False when
+    // cancelled: the job is then stale and must not be published.
+    bool renderSteps(Job& job, uint32_t targetSpp);
     // `midStep`: between two bands of a step, shown only if the UI took the last snapshot.
     void publish(const Job& job, bool idle, bool midStep = false);
 
@@ -133,6 +135,7 @@ private:
 
     uint64_t totalPaths_ = 0;  // worker thread only
     double totalRenderSeconds_ = 0.0;
+    std::chrono::steady_clock::time_point lastPublish_{};
     std::thread thread_;
 };
 
