@@ -13,6 +13,7 @@
 #include "bench_peer.h"
 #include "bench_ranks.h"
 #include "bench_throughput.h"
+#include "bench_viewer.h"
 #include "direction_sampler.h"
 #include "error.h"
 #include "progressive_renderer.h"
@@ -177,6 +178,19 @@ void BenchCommand::run() const {
         peer.threads = threads;
         peer.outDir = out;
         summary += runPeerComparison(peer);
+    }
+    if (!skipThroughput) {
+        ViewerBenchSettings viewer;
+        viewer.scene = root.empty() ? fs::path(scenes.front()) : root / "assets" / "cornell" / "cornell.obj";
+        viewer.depth = depths.front();
+        viewer.threads = threads;
+        viewer.outDir = out;
+        if (quick) {
+            viewer.spp = 48;  // start-up, the same for any length, weighs more than in the full run
+            viewer.uiFrames = 60;
+            viewer.repeats = 1;
+        }
+        summary += runViewerComparison(viewer);
     }
     if (!quick) {
         RankSettings ranks;

@@ -64,4 +64,16 @@ TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as sp
         }
     }
     CHECK(runs >= 4);  // two bundled scenes x two samplers
+
+    // The viewer's section: its figures, or why it could not run (a sanitizer build's child
+    // `strata view` stops on Mesa's leaks; a machine may have no offscreen OpenGL).
+    const size_t viewer = result.out.find("### The viewer:");
+    REQUIRE(viewer != std::string::npos);
+    if (result.out.compare(result.out.find('\n', viewer) + 2, 8, "Skipped:") != 0) {
+        const auto rows = readCsv(dir / "viewer.csv");
+        REQUIRE(rows.size() == 3);  // header, strata render, strata view
+        CHECK(std::stod(rows[1][1]) > 0.0);
+        CHECK(std::stod(rows[2][1]) > 0.0);
+        CHECK(result.out.find("UI frame times while rendering the split view") != std::string::npos);
+    }
 }
