@@ -24,9 +24,9 @@ constexpr int kRenderNiceness = 5;
 constexpr int kFirstStepBands = 4;
 // After the first pass a step changes the image little, and a snapshot for every step (each one
 // built here, uploaded and drawn by the UI) cost the viewer 10% of its throughput at 640x360,
-// where a step takes 48 ms. From the second pass on, snapshots come at most this often, and at
-// every pass's end; fast steps are rendered as many at once as take about this long.
-constexpr double kLaterPassSnapshotSeconds = 0.25;
+// where a step takes 48 ms. From the second pass on, fast steps are rendered together in groups
+// that take at least this long (within the pass), and the display updates after each group.
+constexpr double kStepGroupSeconds = 0.25;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
@@ -39,10 +39,11 @@ double secondsSince(Clock::time_point start) {
 
 // The steps the next renderSteps call renders: one in the first pass, which the display shows
 // step by step, and while a step is slow (it is split in bands instead); later, as many as take
-// about kLaterPassSnapshotSeconds, within the pass and the target spp.
+// kStepGroupSeconds, within the pass and the target spp.
 int stepsAtOnce(uint32_t pass, int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) {
     if (pass == 0 || stepSeconds <= 0.0) return 1;
-    int steps = std::clamp(static_cast<int>(kLaterPassSnapshotSeconds / stepSeconds), 1, kPathsPerPass - step);
+    const double wanted = std::ceil(kStepGroupSeconds / stepSeconds);
+    int steps = static_cast<int>(std::min<double>(wanted, kPathsPerPass - step));
     if (targetSpp > spp) steps = std::min(steps, static_cast<int>(targetSpp - spp));
     return steps;
 }
@@ -248,14 +249,11 @@ bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
 void RenderWorker::publish(const Job& job, bool idle, bool midStep) {
     {
         std::lock_guard lock(snapshotMutex_);
-        // Build a new image only when a pass just closed, or the worker is about to rest (its
-        // last state must be shown), or else the UI has taken the last one and, after the first
-        // pass, the last one is old enough.
+        // Build a new image only when the UI has taken the last one, a pass just closed, or the
+        // worker is about to rest (its last state must be shown).
         const bool passClosed = job.step == 0 && !midStep;
-        const bool due = taken_ && (job.pass == 0 || secondsSince(lastPublish_) >= kLaterPassSnapshotSeconds);
-        if (!passClosed && !idle && !due) return;
+        if (!taken_ && !passClosed && !idle) return;
     }
-    lastPublish_ = Clock::now();
     auto snapshot = std::make_shared<WorkerSnapshot>();
     snapshot->generation = job.generation;
     snapshot->preview = job.preview;

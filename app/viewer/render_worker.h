@@ -7,7 +7,6 @@
 // (spp, render time, or every pixel under the noise threshold) or a pause blocks the thread on a
 // condition variable (no CPU) until something changes.
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -135,7 +134,6 @@ private:
 
     uint64_t totalPaths_ = 0;  // worker thread only
     double totalRenderSeconds_ = 0.0;
-    std::chrono::steady_clock::time_point lastPublish_{};
     std::thread thread_;
 };
 
