@@ -51,18 +51,23 @@ std::shared_ptr<const WorkerSnapshot> restAt(RenderWorker& worker, uint32_t spp)
     return nullptr;
 }
 
+// The bundled furnace, small, strata24 at depth K, rendered by one thread.
+WorkerConfig furnaceOnOneThread(int width, int height, int depth) {
+    WorkerConfig config;
+    config.scene = std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/furnace/furnace.obj"));
+    config.pose = config.scene->settings.pose;
+    config.width = width;
+    config.height = height;
+    config.sides = {SideConfig{SamplerKind::Strata24, depth}};
+    config.threads = 1;
+    return config;
+}
+
 }  // namespace
 
 TEST_CASE("render worker: memory stays flat over 10^4 passes, and a higher target continues the render") {
-    const auto scene = std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/furnace/furnace.obj"));
     RenderWorker worker;
-    WorkerConfig config;
-    config.scene = scene;
-    config.pose = scene->settings.pose;
-    config.width = 4;
-    config.height = 4;
-    config.sides = {SideConfig{SamplerKind::Strata24, 1}};
-    config.threads = 1;
+    WorkerConfig config = furnaceOnOneThread(4, 4, 1);
     config.targetSpp = 24 * 200;  // warm up: allocators and TBB reach their steady state
     worker.configure(config);
     const auto warm = restAt(worker, config.targetSpp);
@@ -84,15 +89,8 @@ TEST_CASE("render worker: memory stays flat over 10^4 passes, and a higher targe
 TEST_CASE("render worker: steps rendered several at once stop exactly at a target inside a pass") {
     // After its first pass the worker renders fast steps several at a time; a target that is not
     // a whole number of passes must still be met exactly, the image's samples those of the steps.
-    const auto scene = std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/furnace/furnace.obj"));
     RenderWorker worker;
-    WorkerConfig config;
-    config.scene = scene;
-    config.pose = scene->settings.pose;
-    config.width = 6;
-    config.height = 5;
-    config.sides = {SideConfig{SamplerKind::Strata24, 2}};
-    config.threads = 1;
+    WorkerConfig config = furnaceOnOneThread(6, 5, 2);
     for (uint32_t target : {24u * 3 + 5, 24u * 7 + 23, 24u * 9}) {
         CAPTURE(target);
         config.targetSpp = target;
