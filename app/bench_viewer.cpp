@@ -75,8 +75,7 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
                 if (t.wall < 0.0) return kTitle + "Skipped: `strata render` failed (see " + log.string() + ").\n";
                 renderWall.push_back(t.wall);
             } else if (!runView(view, log, viewRuns)) {
-                return kTitle + "Skipped: `strata view --headless` failed, no offscreen OpenGL here? (see " +
-                       log.string() + ").\n";
+                return kTitle + "Skipped: `strata view --headless` failed (see " + log.string() + ").\n";
             }
         }
         if (!runView(splitView, log, splitRuns)) {

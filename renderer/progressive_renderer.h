@@ -60,8 +60,8 @@ public:
     // viewer abandons it: a camera change must not wait for a whole step).
     void renderStep(AccumulationBuffer& buffer, uint32_t pass, int step, const StepControl& control = {});
     // Steps [firstStep, endStep) of pass `pass`, as renderStep one after the other would render
-    // them (the same samples), but each pixel's paths together: its accumulator stays in cache.
-    // One step at a time cost the viewer 2-6% of its throughput at 640x360.
+    // them (the same samples), but each pixel's paths together, as renderPass does: one step at a
+    // time was 2-6% slower than whole passes at 640x360 (its accumulator, likely, out of cache).
     void renderSteps(AccumulationBuffer& buffer, uint32_t pass, int firstStep, int endStep,
                      const StepControl& control = {});
 

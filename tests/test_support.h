@@ -12,7 +12,24 @@
 #include "path_integrator.h"
 #include "ray.h"
 
+// Whether this build runs under AddressSanitizer or ThreadSanitizer: their allocators keep freed
+// memory, and a sanitized `strata` child process stops on leaks in Mesa, so a few checks of
+// resident memory and of child processes apply only without them.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define STRATA_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define STRATA_TEST_SANITIZED 1
+#endif
+#endif
+
 namespace strata::test {
+
+#ifdef STRATA_TEST_SANITIZED
+inline constexpr bool kSanitizedBuild = true;
+#else
+inline constexpr bool kSanitizedBuild = false;
+#endif
 
 std::filesystem::path sourceDir();
 std::filesystem::path sharedDir();
