@@ -5,8 +5,8 @@
 #include <CLI/Config.hpp>
 #include <CLI/Formatter.hpp>
 
-#include "bench_command.h"
-#include "error.h"
+#include "bench/bench_command.h"
+#include "util/error.h"
 #include "render_command.h"
 #include "render_job.h"
 #include "samples_command.h"

@@ -7,10 +7,10 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
-#include "adaptive_sampling.h"
-#include "error.h"
-#include "image_io.h"
-#include "pass_partition.h"
+#include "film/adaptive_sampling.h"
+#include "util/error.h"
+#include "io/image_io.h"
+#include "integrator/pass_partition.h"
 #include "progress.h"
 #include "render_job.h"
 #include "render_options.h"

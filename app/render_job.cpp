@@ -6,7 +6,7 @@
 #include <new>
 #include <span>
 
-#include "error.h"
+#include "util/error.h"
 
 #if STRATA_WITH_MPI
 #include <mpi.h>
@@ -176,8 +176,8 @@ SceneFiles RenderJob::shareSceneFiles(const std::function<SceneFiles()>& read) {
 // a negative intensity would break this, and make the bound relative to the sum of magnitudes
 // instead), so after the division by n and the rounding to float an output pixel channel equals
 // the single-process one or is the adjacent float (2^-23 relative), when the double lies next to
-// a rounding boundary. tests/test_mpi_render.cpp checks that bound against the single-process
-// render, tests/test_accumulation_buffer.cpp the double-level bound for combined buffers.
+// a rounding boundary. tests/app/test_mpi_render.cpp checks that bound against the single-process
+// render, tests/film/test_accumulation_buffer.cpp the double-level bound for combined buffers.
 void RenderJob::reduce([[maybe_unused]] AccumulationBuffer& buffer,
                        [[maybe_unused]] RenderCounters& counters) {
     if (!mpi_) return;

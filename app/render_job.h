@@ -11,9 +11,9 @@
 #include <string>
 #include <type_traits>
 
-#include "accumulation_buffer.h"
-#include "progressive_renderer.h"
-#include "scene_loader.h"
+#include "film/accumulation_buffer.h"
+#include "integrator/progressive_renderer.h"
+#include "scene/scene_loader.h"
 
 namespace strata {
 

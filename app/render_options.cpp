@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "error.h"
-#include "truncation.h"
+#include "util/error.h"
+#include "integrator/truncation.h"
 
 namespace strata {
 

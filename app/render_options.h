@@ -7,9 +7,9 @@
 #include <string>
 #include <CLI/App.hpp>
 
-#include "camera.h"
-#include "progressive_renderer.h"
-#include "scene_loader.h"
+#include "scene/camera.h"
+#include "integrator/progressive_renderer.h"
+#include "scene/scene_loader.h"
 
 namespace strata {
 

@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "direction_sampler.h"
-#include "error.h"
-#include "progressive_renderer.h"
+#include "sampling/direction_sampler.h"
+#include "util/error.h"
+#include "integrator/progressive_renderer.h"
 
 namespace strata {
 namespace {

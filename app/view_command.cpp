@@ -4,7 +4,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "error.h"
+#include "util/error.h"
 #include "render_options.h"
 #include "viewer_run.h"
 

@@ -9,7 +9,7 @@
 #          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000, at most STRATA_FUZZ_SECONDS,
 #          default 180, on a loaded machine) from the seed corpus
 #          tests/fuzz/corpus. A finding is saved in build-fuzz/findings/ and fails the check; turn
-#          it into a case of tests/test_fuzz_regressions.cpp.
+#          it into a case of tests/scene/test_fuzz_regressions.cpp.
 # Usage: bash scripts/check.sh asan|tsan|fuzz...   (scripts/test.sh runs all three in CI)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -5,11 +5,11 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
-#include "accumulation_buffer.h"
-#include "camera.h"
-#include "mesh.h"
-#include "progressive_renderer.h"
-#include "scene.h"
+#include "film/accumulation_buffer.h"
+#include "scene/camera.h"
+#include "scene/mesh.h"
+#include "integrator/progressive_renderer.h"
+#include "scene/scene.h"
 
 namespace strata::test {
 

@@ -8,8 +8,8 @@
 #include <unistd.h>
 #include <glm/geometric.hpp>
 
-#include "accumulation_buffer.h"
-#include "path_samples.h"
+#include "film/accumulation_buffer.h"
+#include "sampling/path_samples.h"
 
 namespace strata::test {
 

@@ -8,9 +8,9 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
-#include "mesh.h"
-#include "path_integrator.h"
-#include "ray.h"
+#include "scene/mesh.h"
+#include "integrator/path_integrator.h"
+#include "geometry/ray.h"
 
 // Whether this build runs under AddressSanitizer or ThreadSanitizer: their allocators keep freed
 // memory, and a sanitized `strata` child process stops on leaks in Mesa, so a few checks of

@@ -5,7 +5,7 @@
 // codes (ASCII for letters), the indices the ImGui GLFW backend fills io.KeysDown with.
 #include <glm/vec3.hpp>
 
-#include "camera.h"
+#include "scene/camera.h"
 
 struct ImGuiIO;
 

@@ -1,6 +1,6 @@
 #include "display_image.h"
 
-#include "accumulation_buffer.h"
+#include "film/accumulation_buffer.h"
 
 namespace strata::viewer {
 

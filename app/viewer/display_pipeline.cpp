@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "error.h"
+#include "util/error.h"
 #include "shader_sources.h"
 
 namespace strata::viewer {
@@ -113,7 +113,7 @@ void DisplayPipeline::draw(const DisplaySettings& settings, const Viewport& view
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself, like renderer/tonemap.cpp
+    glDisable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself, like renderer/io/tonemap.cpp
     const GLuint program = programs_.at(static_cast<size_t>(settings.view));
     glUseProgram(program);
     glUniform1i(glGetUniformLocation(program, "uImage"), 0);

@@ -5,7 +5,7 @@
 
 #include "display_image.h"
 #include "gl_loader.h"
-#include "tonemap.h"
+#include "io/tonemap.h"
 
 namespace strata::viewer {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "error.h"
-#include "image_io.h"
+#include "util/error.h"
+#include "io/image_io.h"
 
 namespace strata::viewer {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "error.h"
+#include "util/error.h"
 
 namespace strata::viewer {
 

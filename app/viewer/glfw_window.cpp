@@ -8,7 +8,7 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
-#include "error.h"
+#include "util/error.h"
 
 namespace strata::viewer {
 

@@ -5,7 +5,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include "error.h"
+#include "util/error.h"
 // glad before osmesa.h, which would otherwise pull in the system GL header.
 #include "gl_loader.h"
 #include <GL/osmesa.h>

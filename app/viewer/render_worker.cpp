@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "accumulation_buffer.h"
-#include "progressive_renderer.h"
+#include "film/accumulation_buffer.h"
+#include "integrator/progressive_renderer.h"
 
 namespace strata::viewer {
 namespace {

@@ -16,12 +16,12 @@
 #include <thread>
 #include <vector>
 
-#include "camera.h"
-#include "adaptive_sampling.h"
-#include "direction_sampler.h"
+#include "scene/camera.h"
+#include "film/adaptive_sampling.h"
+#include "sampling/direction_sampler.h"
 #include "display_image.h"
-#include "image_io.h"
-#include "scene_loader.h"
+#include "io/image_io.h"
+#include "scene/scene_loader.h"
 
 namespace strata::viewer {
 
@@ -46,7 +46,7 @@ struct WorkerConfig {
     bool preview = false;
     // Reference radiance for RMSE (same size as the image), else the standard error is shown.
     std::shared_ptr<const Image> reference;
-    // Adaptive sampling (renderer/adaptive_sampling.h): a pixel whose relative standard error is
+    // Adaptive sampling (renderer/film/adaptive_sampling.h): a pixel whose relative standard error is
     // at most this receives no more passes; 0: off.
     double noiseThreshold = 0.0;
     // These three never restart accumulation.

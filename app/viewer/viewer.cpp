@@ -5,8 +5,8 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
-#include "error.h"
-#include "image_io.h"
+#include "util/error.h"
+#include "io/image_io.h"
 
 namespace strata::viewer {
 namespace {

@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "error_plot.h"
-#include "progressive_renderer.h"
-#include "scene.h"
-#include "truncation.h"
+#include "integrator/progressive_renderer.h"
+#include "scene/scene.h"
+#include "integrator/truncation.h"
 
 namespace strata::viewer {
 namespace {

@@ -17,7 +17,7 @@ struct ViewerSettings {
     SideConfig single{SamplerKind::Strata24, 5};                    // the one-image view
     std::array<SideConfig, 2> halves{SideConfig{SamplerKind::Uniform, 5},
                                      SideConfig{SamplerKind::Strata24, 5}};  // split: left, right
-    // Every side's depth K_eps from the truncation error `epsilon` (renderer/truncation.h) instead
+    // Every side's depth K_eps from the truncation error `epsilon` (renderer/integrator/truncation.h) instead
     // of the depth sliders, when the scene allows it.
     bool depthFromEpsilon = false;
     float epsilon = 1e-3f;

@@ -9,7 +9,7 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
-#include "error.h"
+#include "util/error.h"
 #include "glfw_window.h"
 
 namespace strata::viewer {

@@ -6,9 +6,9 @@
 #include <string>
 #include <glm/geometric.hpp>
 
-#include "camera.h"
-#include "error.h"
-#include "obj_loader.h"
+#include "scene/camera.h"
+#include "util/error.h"
+#include "scene/obj_loader.h"
 
 namespace strata::fuzz {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // One input of the scene-loader fuzzer: OBJ text, a NUL byte, MTL text, a NUL byte, camera JSON
 // (missing parts are empty), fed through strata::parseObj and strata::parseSceneSettings, the
-// code paths of loading files. Shared by the fuzzer and tests/test_fuzz_regressions.cpp, which
+// code paths of loading files. Shared by the fuzzer and tests/scene/test_fuzz_regressions.cpp, which
 // replays the seed corpus and every finding.
 #include <string_view>
 

@@ -1,0 +1,238 @@
+#include "bench/bench_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <tbb/info.h>
+
+#include "bench/bench_convergence.h"
+#include "bench/bench_output.h"
+#include "bench/bench_peer.h"
+#include "bench/bench_ranks.h"
+#include "bench/bench_throughput.h"
+#include "bench/bench_viewer.h"
+#include "sampling/direction_sampler.h"
+#include "util/error.h"
+#include "integrator/progressive_renderer.h"
+
+namespace strata {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchCommand {
+    std::vector<std::string> scenes;
+    bool quick = false;
+    std::string outDir = "bench-out";
+    std::vector<int> depths{5};
+    int width = 0;
+    int maxSpp = 0;
+    double maxSeconds = 60.0;
+    bool makeReference = false;
+    std::string reference;
+    int referenceSpp = 0;
+    bool vsEmbree = false;
+    bool skipThroughput = false;
+    uint64_t seed = 0;
+    int threads = 0;
+
+    void run() const;
+};
+
+// The repository's root: the working directory if it holds assets/, else the nearest ancestor of
+// the executable that does (so `build/app/strata bench` works from anywhere).
+fs::path repositoryRoot() {
+    if (fs::is_directory("assets")) return fs::current_path();
+    for (fs::path p = fs::read_symlink("/proc/self/exe").parent_path(); p.has_relative_path();
+         p = p.parent_path()) {
+        if (fs::is_directory(p / "assets")) return p;
+    }
+    throw Error("cannot find the bundled assets/ folder; run from the repository or give scenes");
+}
+
+// Every FOLDER/*/*.obj, sorted.
+std::vector<fs::path> scenesIn(const fs::path& folder) {
+    std::vector<fs::path> found;
+    if (!fs::is_directory(folder)) return found;
+    for (const auto& dir : fs::directory_iterator(folder)) {
+        if (!dir.is_directory()) continue;
+        for (const auto& file : fs::directory_iterator(dir.path())) {
+            if (file.path().extension() == ".obj") found.push_back(file.path());
+        }
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+// Every sampler the renderer offers (direction_sampler.h), so new ones are benchmarked too.
+std::vector<std::string> allSamplers() {
+    std::vector<std::string> names;
+    const std::string list = samplerNames();
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t bar = std::min(list.find('|', start), list.size());
+        names.push_back(list.substr(start, bar - start));
+        start = bar + 1;
+    }
+    return names;
+}
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    }
+    return "unknown CPU";
+}
+
+// The 1-minute load average: on a shared machine it says how much the figures are inflated.
+double loadAverage() {
+    double load[1] = {0.0};
+    return getloadavg(load, 1) == 1 ? load[0] : -1.0;
+}
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    char text[64];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    return text;
+}
+
+void BenchCommand::run() const {
+    const int benchWidth = width > 0 ? width : (quick ? 48 : 96);
+    const int lastSpp = maxSpp > 0 ? maxSpp : 24 * 16;
+    const int refSpp = referenceSpp > 0 ? referenceSpp : 16 * lastSpp;
+    if (lastSpp % kPathsPerPass != 0 || refSpp % kPathsPerPass != 0) {
+        throw Error("--max-spp and --reference-spp must be multiples of 24");
+    }
+    for (int d : depths) {
+        if (d < 0 || d > 1000) throw Error("--depth: must be in 0..1000");
+    }
+    if (!reference.empty() && !fs::is_regular_file(reference)) {
+        throw Error("--reference " + reference + ": no such file");
+    }
+    const fs::path root = scenes.empty() ? repositoryRoot() : fs::path();
+    const fs::path out = outDir;
+    fs::create_directories(out);
+    const auto start = std::chrono::steady_clock::now();
+    const double startLoad = loadAverage();
+
+    ConvergenceSettings convergence;
+    if (!scenes.empty()) {
+        for (const auto& s : scenes) convergence.scenes.emplace_back(s);
+    } else {
+        // CI's quick run keeps to the bundled Cornell box and furnace (the glossy scene's
+        // material-blind samplers are firefly-bound at quick budgets, so its curves say little
+        // there); the full suite adds every bundled and shared scene.
+        for (const auto& s : scenesIn(root / "assets")) {
+            const auto name = s.stem().string();
+            if (!quick || name == "cornell" || name == "furnace") convergence.scenes.push_back(s);
+        }
+        if (!quick) {
+            for (const auto& s : scenesIn(root / ".." / "shared" / "scenes")) convergence.scenes.push_back(s);
+        }
+    }
+    convergence.samplers = allSamplers();
+    convergence.depths = depths;
+    convergence.width = benchWidth;
+    convergence.maxPasses = static_cast<uint32_t>(lastSpp / kPathsPerPass);
+    convergence.maxSeconds = maxSeconds;
+    convergence.referencePasses = static_cast<uint32_t>(refSpp / kPathsPerPass);
+    convergence.makeReference = makeReference || quick;  // quick references are small and cheap
+    if (!reference.empty()) convergence.referenceFile = fs::path(reference);
+    convergence.seed = seed;
+    convergence.skips = true;
+    convergence.threads = threads;
+    convergence.outDir = out;
+    const auto runs = runConvergence(convergence);
+
+    const int threadCount = threads > 0 ? threads : tbb::info::default_concurrency();
+    std::string summary = "# strata bench" + std::string(quick ? " --quick" : "") + "\n\n" + utcNow() +
+                          ", " + cpuModel() + ", " + std::to_string(threadCount) + " threads" +
+                          cell(", load average %.2f at the start", startLoad) + ".\n\n" +
+                          convergenceSummary(runs) + "\n" + skipsSummary(runs);
+
+    if (!skipThroughput) {
+        ThroughputSettings throughput;
+        const fs::path shared = root / ".." / "shared" / "scenes" / "cornell" / "scene.obj";
+        throughput.scene = !scenes.empty() ? fs::path(scenes.front())
+                           : (!quick && fs::is_regular_file(shared)) ? shared
+                                                                     : root / "assets" / "cornell" / "cornell.obj";
+        throughput.depth = depths.front();
+        throughput.threads = threads;
+        throughput.quick = quick;
+        throughput.seed = seed;
+        throughput.outDir = out;
+        summary += "\n" + runThroughput(throughput);
+    }
+    if (vsEmbree) {
+        PeerSettings peer;
+        peer.scene = (scenes.empty() ? root : repositoryRoot()) / ".." / "shared" / "scenes" /
+                     "cornell_point" / "scene.obj";
+        peer.depth = depths.front();
+        peer.spp = quick ? 24 : 96;
+        peer.repeats = quick ? 1 : 3;
+        peer.threads = threads;
+        peer.outDir = out;
+        summary += runPeerComparison(peer);
+    }
+    if (!skipThroughput) {
+        ViewerBenchSettings viewer;
+        viewer.scene = root.empty() ? fs::path(scenes.front()) : root / "assets" / "cornell" / "cornell.obj";
+        viewer.depth = depths.front();
+        viewer.threads = threads;
+        viewer.outDir = out;
+        if (quick) {
+            viewer.spp = 48;  // start-up, the same for any length, weighs more than in the full run
+            viewer.uiFrames = 60;
+            viewer.repeats = 1;
+        }
+        summary += runViewerComparison(viewer);
+    }
+    if (!quick) {
+        RankSettings ranks;
+        ranks.scene = root / "assets" / "cornell" / "cornell.obj";
+        ranks.depth = depths.front();
+        ranks.threads = threads;
+        ranks.outDir = out;
+        summary += runRankComparison(ranks);
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    summary += cell("\nBench wall time: %.1f s. Files: %s/ (CSV per run, PNG plots).\n", seconds,
+                    out.string().c_str());
+    writeTextFile(out / "summary.md", summary);
+    std::printf("%s", summary.c_str());
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+    auto command = std::make_shared<BenchCommand>();
+    CLI::App* sub = app.add_subcommand(
+        "bench", "Measure run time against error, throughput against Embree's ceiling, and a peer");
+    sub->add_option("scenes", command->scenes,
+                    "Scenes (.obj); default: assets/*/ and ../shared/scenes/*/");
+    sub->add_flag("--quick", command->quick, "Small sizes and budgets (CI smoke run, < 3 min on 2 cores)");
+    sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
+    sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();
+    sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
+    sub->add_option("--max-spp", command->maxSpp, "Last checkpoint, a multiple of 24 (default 384)");
+    sub->add_option("--max-seconds", command->maxSeconds, "Time budget per run (stops at the next checkpoint)")
+        ->capture_default_str();
+    sub->add_flag("--make-reference", command->makeReference,
+                  "Render missing references (EXR keyed by a hash of scene, camera and depth)");
+    sub->add_option("--reference", command->reference, "Reference EXR to compare against (one scene)");
+    sub->add_option("--reference-spp", command->referenceSpp, "Reference spp (default 16x --max-spp)");
+    sub->add_flag("--vs-embree", command->vsEmbree,
+                  "Also race Embree's tutorial pathtracer on ../shared/scenes/cornell_point");
+    sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
+    sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
+    sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
+    sub->callback([command] { command->run(); });
+}
+
+}  // namespace strata

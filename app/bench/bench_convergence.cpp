@@ -1,0 +1,372 @@
+#include "bench/bench_convergence.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <tuple>
+
+#include "film/adaptive_sampling.h"
+#include "bench/convergence.h"
+#include "util/error.h"
+#include "film/image_metrics.h"
+#include "progress.h"
+#include "integrator/progressive_renderer.h"
+#include "bench/ray_throughput.h"
+#include "bench/reference_cache.h"
+#include "scene/scene_loader.h"
+
+namespace strata {
+namespace {
+
+// The adaptive-sampling variant of the skips comparison stops pixels at 5% relative error.
+constexpr double kBenchNoiseThreshold = 0.05;
+
+using Clock = std::chrono::steady_clock;
+// The reference must not share the bench's random numbers, or its error would correlate with
+// theirs.
+constexpr uint64_t kReferenceSeedOffset = 0x5eed5eed5eed5eedull;
+
+struct Reference {
+    std::optional<glm::vec3> constant;
+    Image image;
+    std::string kind;
+};
+
+Image renderReference(const LoadedScene& loaded, const Camera& camera,
+                      const PathIntegratorSettings& integrator, const ConvergenceSettings& settings) {
+    RenderSettings render;
+    render.integrator = integrator;
+    render.integrator.sampler = SamplerKind::Strata24;
+    render.seed = settings.seed + kReferenceSeedOffset;
+    render.threads = settings.threads;
+    AccumulationBuffer buffer(camera.width(), camera.height());
+    ProgressiveRenderer renderer(loaded.scene, camera, render);
+    ProgressReporter progress("reference " + sceneName(loaded.objPath), settings.referencePasses,
+                              kPathsPerPass);
+    for (uint32_t pass = 0; pass < settings.referencePasses; ++pass) {
+        renderer.renderPass(buffer, pass);
+        progress.update(pass + 1, renderer.counters().paths);
+    }
+    progress.finish(settings.referencePasses, renderer.counters().paths);
+    return Image::fromMeans(buffer);
+}
+
+std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
+                                       const PathIntegratorSettings& integrator,
+                                       const ConvergenceSettings& settings) {
+    if (auto exact = furnaceRadiance(loaded.scene, camera.pose(), integrator)) {
+        return Reference{exact, {}, "analytic"};
+    }
+    if (settings.referenceFile) {
+        Image image = readExr(*settings.referenceFile);
+        if (image.width != camera.width() || image.height != camera.height()) {
+            throw Error("--reference " + settings.referenceFile->string() + ": " +
+                        std::to_string(image.width) + "x" + std::to_string(image.height) +
+                        ", but the bench renders " + std::to_string(camera.width()) + "x" +
+                        std::to_string(camera.height()) + " (use --width)");
+        }
+        return Reference{std::nullopt, std::move(image), "file"};
+    }
+    const auto path = referencePath(settings.outDir / "references", loaded, camera, integrator);
+    if (std::filesystem::is_regular_file(path)) return Reference{std::nullopt, readExr(path), "cache"};
+    if (!settings.makeReference) {
+        std::fprintf(stderr, "note: no reference %s for %s; run with --make-reference (skipped)\n",
+                     path.string().c_str(), loaded.objPath.string().c_str());
+        return std::nullopt;
+    }
+    std::filesystem::create_directories(path.parent_path());
+    Image image = renderReference(loaded, camera, integrator, settings);
+    writeImage(path, image);
+    std::fprintf(stderr, "wrote reference %s\n", path.string().c_str());
+    return Reference{std::nullopt, std::move(image), "made"};
+}
+
+ImageError measure(const Image& image, const Reference& reference) {
+    return reference.constant ? compareToConstant(image, *reference.constant)
+                              : compareImages(image, reference.image);
+}
+
+// `noiseThreshold` > 0: adaptive sampling (adaptive_sampling.h) decides which pixels get passes.
+ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const Camera& camera,
+                      const RenderSettings& render, const Reference& reference,
+                      const ConvergenceSettings& settings, const std::string& variant = "",
+                      double noiseThreshold = 0.0) {
+    ConvergenceRun run{label,
+                       loaded.objPath.string(),
+                       std::string(samplerName(render.integrator.sampler)),
+                       variant,
+                       render.integrator.depth,
+                       render.integrator.nextEventEstimation,
+                       reference.kind,
+                       {}};
+    AccumulationBuffer buffer(camera.width(), camera.height());
+    ProgressiveRenderer renderer(loaded.scene, camera, render);
+    ProgressReporter progress(run.scene + "/" + run.sampler + (variant.empty() ? "" : "/" + variant) +
+                                  "/d" + std::to_string(run.depth),
+                              settings.maxPasses, kPathsPerPass);
+    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
+    double seconds = 0.0, cpuSeconds = 0.0;
+    uint32_t nextCheckpoint = 1;
+    for (uint32_t pass = 0; pass < settings.maxPasses; ++pass) {
+        const auto start = Clock::now();
+        const double cpuStart = processCpuSeconds();
+        renderer.renderPass(buffer, pass, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
+        if (adaptive.enabled()) adaptive.update(buffer);
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        cpuSeconds += processCpuSeconds() - cpuStart;
+        progress.update(pass + 1, renderer.counters().paths);
+        if (pass + 1 != nextCheckpoint) continue;
+        nextCheckpoint *= 2;
+        const ImageError error = measure(Image::fromMeans(buffer), reference);
+        const RenderCounters counters = renderer.counters();
+        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, (pass + 1) * kPathsPerPass, counters.paths,
+                                             counters.rays, error.mse, error.rmse, error.relMse,
+                                             efficiency(error.relMse, seconds),
+                                             buffer.droppedSamples()});
+        if (seconds >= settings.maxSeconds) break;
+    }
+    progress.finish(run.checkpoints.empty() ? 0 : run.checkpoints.back().spp / kPathsPerPass,
+                    renderer.counters().paths);
+    return run;
+}
+
+void writeRunCsv(const std::filesystem::path& dir, const ConvergenceRun& run) {
+    Table table{{"scene", "sampler", "depth", "nee", "reference", "seconds", "cpu_seconds", "spp",
+                 "paths", "rays",
+                 "mse", "rmse", "relmse", "efficiency", "nonfinite"},
+                {}};
+    for (const Checkpoint& c : run.checkpoints) {
+        table.add({run.scene, run.sampler, std::to_string(run.depth), run.nee ? "1" : "0",
+                   run.reference, cell("%.6g", c.seconds), cell("%.6g", c.cpuSeconds),
+                   std::to_string(c.spp),
+                   std::to_string(c.paths), std::to_string(c.rays), cell("%.6g", c.mse),
+                   cell("%.6g", c.rmse), cell("%.6g", c.relMse), cell("%.6g", c.efficiency),
+                   std::to_string(c.nonFinite)});
+    }
+    writeTextFile(dir / ("convergence-" + run.scene + "-" + run.sampler +
+                         (run.variant.empty() ? "" : "-" + run.variant) + "-d" +
+                         std::to_string(run.depth) + ".csv"),
+                  table.csv());
+}
+
+void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<ConvergenceRun>& runs) {
+    if (runs.empty()) return;
+    const std::string stem = runs.front().scene + "-d" + std::to_string(runs.front().depth);
+    std::string script =
+        "set terminal pngcairo noenhanced size 640,440 font ',10'\n"
+        "set output 'error-vs-time-" + stem + ".png'\n"
+        "set datafile separator ','\n"
+        "set logscale xy\nset grid\nset key top right\n"
+        "set xlabel 'render CPU seconds (2 threads)'\nset ylabel 'RMSE against the reference'\n"
+        "set title '" + runs.front().scene + ", depth " + std::to_string(runs.front().depth) +
+        " (" + runs.front().reference + " reference)'\n"
+        "plot ";
+    for (size_t i = 0; i < runs.size(); ++i) {
+        script += (i ? ", " : "") + std::string("'convergence-") + runs[i].scene + "-" +
+                  runs[i].sampler + "-d" + std::to_string(runs[i].depth) +
+                  ".csv' using 'cpu_seconds':'rmse' with linespoints lw 2 title '" + runs[i].sampler + "'";
+    }
+    runGnuplot(dir, "error-vs-time-" + stem, script + "\n");
+}
+
+template <typename Get>
+std::vector<double> column(const ConvergenceRun& run, Get get) {
+    std::vector<double> values;
+    for (const Checkpoint& c : run.checkpoints) values.push_back(get(c));
+    return values;
+}
+
+std::string slopeVerdict(const PowerLawFit& fit) {
+    // Monte Carlo's rate is spp^-1/2; the paper claims a faster one (notes section 4 (ii)).
+    const double tolerance = std::max(0.1, 3.0 * fit.slopeStandardError);
+    if (std::fabs(fit.slope + 0.5) <= tolerance) return "~ -1/2 (plain Monte Carlo rate)";
+    if (std::fabs(fit.slope + 1.0) <= tolerance) return "~ -1 (the paper's claimed rate)";
+    return fit.slope > -0.5 ? "slower than -1/2 (bias or reference noise floor?)"
+                            : "between -1/2 and -1";
+}
+
+}  // namespace
+
+std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) {
+    std::vector<ConvergenceRun> runs;
+    std::map<std::string, int> uses;  // two scenes may share a name (assets/cornell, shared cornell)
+    for (const auto& scenePath : settings.scenes) {
+        const LoadedScene loaded = loadScene(scenePath);
+        std::string label = sceneName(loaded.objPath);
+        if (const int n = ++uses[label]; n > 1) label.append("-").append(std::to_string(n));
+        std::fprintf(stderr, "bench scene %s: %s\n", label.c_str(), scenePath.string().c_str());
+        const int height = std::max(1, static_cast<int>(std::lround(
+            static_cast<double>(settings.width) * loaded.settings.height / loaded.settings.width)));
+        const Camera camera(loaded.settings.pose, settings.width, height);
+        for (int depth : settings.depths) {
+            RenderSettings render;
+            render.integrator.depth = depth;
+            // Point lights are reached by next-event estimation only: without it such a scene is black.
+            render.integrator.nextEventEstimation = !loaded.scene.mesh().pointLights.empty();
+            render.seed = settings.seed;
+            render.threads = settings.threads;
+            const auto reference = findReference(loaded, camera, render.integrator, settings);
+            if (!reference) continue;
+            std::vector<ConvergenceRun> group;
+            for (const auto& name : settings.samplers) {
+                render.integrator.sampler = *parseSamplerKind(name);
+                group.push_back(runOne(label, loaded, camera, render, *reference, settings));
+                writeRunCsv(settings.outDir, group.back());
+            }
+            plotErrorAgainstTime(settings.outDir, group);
+            runs.insert(runs.end(), group.begin(), group.end());
+            if (!settings.skips) continue;
+            render.integrator.sampler = SamplerKind::Strata24;
+            RenderSettings generalPath = render;
+            generalPath.integrator.lambertianFastPath = false;
+            RenderSettings roulette = render;
+            roulette.integrator.rouletteDepth = 2;
+            for (auto [variant, variantRender, threshold] :
+                 {std::tuple{"general-materials", generalPath, 0.0},
+                  std::tuple{"roulette-from-2", roulette, 0.0},
+                  std::tuple{"adaptive-5pct", render, kBenchNoiseThreshold}}) {
+                runs.push_back(runOne(label, loaded, camera, variantRender, *reference, settings,
+                                      variant, threshold));
+                writeRunCsv(settings.outDir, runs.back());
+            }
+        }
+    }
+    return runs;
+}
+
+// A run whose error is exactly zero at some checkpoint: a zero-variance estimator on an analytic
+// scene (cosine or BSDF sampling of the furnace). No power law or ratio is defined for it.
+bool exact(const ConvergenceRun& run) {
+    return std::any_of(run.checkpoints.begin(), run.checkpoints.end(),
+                       [](const Checkpoint& c) { return !(c.rmse > 0.0); });
+}
+
+std::string skipsSummary(const std::vector<ConvergenceRun>& runs) {
+    Table table{{"scene", "depth", "skip", "with: MSE", "with: CPU-s", "without: MSE", "without: CPU-s",
+                 "time to the same error, with / without"},
+                {}};
+    for (const auto& run : runs) {
+        if (run.variant.empty() || run.checkpoints.empty()) continue;
+        const auto plain = std::find_if(runs.begin(), runs.end(), [&](const ConvergenceRun& r) {
+            return r.scene == run.scene && r.depth == run.depth && r.sampler == run.sampler &&
+                   r.variant.empty() && !r.checkpoints.empty();
+        });
+        if (plain == runs.end()) continue;
+        // The Lambertian path is on by default: its variant is the run without the skip.
+        const bool variantIsWithout = run.variant == "general-materials";
+        const Checkpoint& with = (variantIsWithout ? plain->checkpoints : run.checkpoints).back();
+        const Checkpoint& without = (variantIsWithout ? run.checkpoints : plain->checkpoints).back();
+        const std::string skip = variantIsWithout ? "Lambertian-only path"
+                                 : run.variant == "roulette-from-2" ? "Russian roulette from bounce 2"
+                                                                    : "adaptive sampling, threshold 5%";
+        const bool exactBoth = !(with.mse > 0.0) || !(without.mse > 0.0);
+        table.add({run.scene, std::to_string(run.depth), skip, cell("%.4g", with.mse),
+                   cell("%.3f", with.cpuSeconds), cell("%.4g", without.mse), cell("%.3f", without.cpuSeconds),
+                   exactBoth ? "- (zero error)"
+                             : cell("%.3f", (with.mse * with.cpuSeconds) / (without.mse * without.cpuSeconds))});
+    }
+    return "### What each skip gains (strata24)\n\n" + table.markdown() +
+           "\nBelow 1: the skip reaches the same error sooner (Monte Carlo's error^2 ~ 1/time, "
+           "taken at the last checkpoint). The black early out applies only to a scene no light "
+           "reaches, which none of these is: such a scene takes no time instead of a full render.\n";
+}
+
+std::string convergenceSummary(const std::vector<ConvergenceRun>& runs) {
+    Table finals{{"scene", "depth", "sampler", "reference", "spp", "seconds", "CPU-s", "Mpaths/CPU-s",
+                  "Mrays/CPU-s",
+                  "RMSE", "relMSE", "efficiency 1/(relMSE s)", "RMSE slope vs spp", "verdict"},
+                 {}};
+    // Group the runs of one (scene, depth) to compare samplers.
+    std::map<std::pair<std::string, int>, std::vector<const ConvergenceRun*>> groups;
+    for (const auto& run : runs) {
+        if (!run.variant.empty()) continue;  // skipsSummary's
+        groups[{run.scene, run.depth}].push_back(&run);
+        if (run.checkpoints.empty()) continue;
+        const Checkpoint& last = run.checkpoints.back();
+        std::string slope = "-", verdict = "-";
+        if (exact(run)) {
+            slope = "exact";
+            verdict = "zero error: a zero-variance estimator here";
+        } else if (run.checkpoints.size() >= 3) {
+            const PowerLawFit fit = fitPowerLaw(column(run, [](auto& c) { return double(c.spp); }),
+                                                column(run, [](auto& c) { return c.rmse; }));
+            slope = cell("%.3f +- %.3f", fit.slope, fit.slopeStandardError);
+            verdict = slopeVerdict(fit);
+        }
+        finals.add({run.scene, std::to_string(run.depth), run.sampler, run.reference,
+                    std::to_string(last.spp), cell("%.3f", last.seconds), cell("%.3f", last.cpuSeconds),
+                    cell("%.3f", last.paths / last.cpuSeconds * 1e-6),
+                    cell("%.3f", last.rays / last.cpuSeconds * 1e-6), cell("%.4g", last.rmse),
+                    cell("%.4g", last.relMse), cell("%.4g", last.efficiency), slope, verdict});
+    }
+
+    Table ratios{{"scene", "depth", "sampler / uniform", "measured Var ratio (equal spp)",
+                  "paper sec. 3: 1/24", "paper sec. 4: (N-1)/(23N) at last N", "verdict",
+                  "RMSE ratio at equal time", "time ratio at equal RMSE"},
+                 {}};
+    for (const auto& [key, group] : groups) {
+        const auto uniform = std::find_if(group.begin(), group.end(),
+                                          [](auto* r) { return r->sampler == "uniform"; });
+        if (uniform == group.end()) continue;
+        const ConvergenceRun& base = **uniform;
+        for (const ConvergenceRun* run : group) {
+            if (run == &base) continue;
+            const size_t n = std::min(run->checkpoints.size(), base.checkpoints.size());
+            if (n == 0) continue;
+            if (exact(*run) || exact(base)) {
+                ratios.add({key.first, std::to_string(key.second), run->sampler,
+                            exact(*run) ? "0 (exact)" : "inf (uniform exact)",
+                            cell("%.4f", kPaperSection3Ratio), "-", "zero error: no ratio to fit", "-", "-"});
+                continue;
+            }
+            std::vector<double> a, b;
+            for (size_t i = 0; i < n; ++i) {
+                a.push_back(run->checkpoints[i].mse);
+                b.push_back(base.checkpoints[i].mse);
+            }
+            const double ratio = varianceRatio(a, b);
+            const double lastN = run->checkpoints[n - 1].spp;
+            const double claim4 = paperSection4Ratio(lastN);
+            std::string verdict = ratio < 1.0 ? cell("lower variance, by x%.2f; ", 1.0 / ratio)
+                                              : std::string("no variance reduction; ");
+            verdict += ratio > 2.0 * kPaperSection3Ratio
+                           ? cell("the paper's 1/24 is contradicted (%.1fx larger)", ratio * 24.0)
+                           : std::string("consistent with the paper's 1/24");
+            // Equal time: both curves at the shorter run's end; equal error: the larger final error.
+            const auto ts = column(*run, [](auto& c) { return c.cpuSeconds; });
+            const auto tu = column(base, [](auto& c) { return c.cpuSeconds; });
+            const auto es = column(*run, [](auto& c) { return c.rmse; });
+            const auto eu = column(base, [](auto& c) { return c.rmse; });
+            const double commonTime = std::min(ts.back(), tu.back());
+            const auto errorS = interpolateLogLog(ts, es, commonTime);
+            const auto errorU = interpolateLogLog(tu, eu, commonTime);
+            const double commonError = std::max(es.back(), eu.back());
+            const auto timeS = firstReach(ts, es, commonError);
+            const auto timeU = firstReach(tu, eu, commonError);
+            ratios.add({key.first, std::to_string(key.second), run->sampler, cell("%.3f", ratio),
+                        cell("%.4f", kPaperSection3Ratio), cell("%.4f", claim4), verdict,
+                        errorS && errorU ? cell("%.3f at %.2f CPU-s", *errorS / *errorU, commonTime) : "-",
+                        timeS && timeU ? cell("%.3f at RMSE %.3g", *timeS / *timeU, commonError) : "-"});
+        }
+    }
+    Table files{{"scene", "file", "reference"}, {}};
+    for (const auto& [key, group] : groups) {
+        if (key.second == groups.begin()->first.second) {
+            files.add({key.first, group.front()->sceneFile, group.front()->reference});
+        }
+    }
+    return "### Scenes\n\n" + files.markdown() +
+           "\n### Error against time (last checkpoint per run)\n\n" + finals.markdown() +
+           "\nSlopes are least-squares fits of log RMSE on log spp over all checkpoints (+- one "
+           "standard error). The MSE includes the reference's own noise (references: 16x or more "
+           "the bench's largest spp, analytic where exact), which flattens the last checkpoints a "
+           "little.\n\n### Variance ratio against the paper's claims, equal time, equal error\n\n" +
+           ratios.markdown() +
+           "\nRatios below 1 favour the sampler over uniform. The variance ratio is the geometric "
+           "mean of MSE ratios over checkpoints at equal spp. Equal time and equal error use CPU "
+           "seconds: the machine is shared, and wall time moves with other people's load.\n";
+}
+
+}  // namespace strata

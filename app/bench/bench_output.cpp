@@ -1,0 +1,72 @@
+#include "bench/bench_output.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <unistd.h>
+
+#include "util/error.h"
+
+namespace strata {
+
+std::string Table::csv() const {
+    auto line = [](const std::vector<std::string>& cells) {
+        std::string s;
+        for (size_t i = 0; i < cells.size(); ++i) s += (i ? "," : "") + cells[i];
+        return s + "\n";
+    };
+    std::string text = line(header);
+    for (const auto& row : rows) text += line(row);
+    return text;
+}
+
+std::string Table::markdown() const {
+    auto line = [](const std::vector<std::string>& cells) {
+        std::string s = "|";
+        for (const auto& c : cells) s += " " + c + " |";
+        return s + "\n";
+    };
+    std::string text = line(header) + "|";
+    for (size_t i = 0; i < header.size(); ++i) text += "---|";
+    text += "\n";
+    for (const auto& row : rows) text += line(row);
+    return text;
+}
+
+std::string cell(const char* format, ...) {
+    char buffer[256];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_end(args);
+    return buffer;
+}
+
+void writeTextFile(const std::filesystem::path& path, const std::string& text) {
+    const auto temporary = path.string() + ".tmp" + std::to_string(getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) {
+            std::filesystem::remove(temporary);
+            throw Error(path.string() + ": cannot write");
+        }
+    }
+    std::filesystem::rename(temporary, path);
+}
+
+bool runGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& script) {
+    writeTextFile(dir / (name + ".gp"), script);
+    const std::string command = "cd '" + dir.string() + "' && gnuplot '" + name + ".gp' 2>&1";
+    const int status = std::system(command.c_str());
+    if (status != 0) {
+        std::fprintf(stderr, "note: gnuplot failed on %s/%s.gp (install gnuplot-nox); no plot\n",
+                     dir.string().c_str(), name.c_str());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace strata

@@ -1,0 +1,41 @@
+#pragma once
+// Reference images for error measurements (issue 5):
+//   - analytic scenes need none: a closed furnace has the exact radiance of notes section 5.1;
+//   - other scenes use a high-spp render stored as EXR and named by a key that hashes everything
+//     the image depends on (the scene's files, the camera, the size, the depth, next-event
+//     estimation), so that editing any of them makes a new key and a stale reference is never
+//     picked up.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <glm/vec3.hpp>
+
+#include "scene/camera.h"
+#include "integrator/path_integrator.h"
+#include "scene/scene_loader.h"
+
+namespace strata {
+
+// The exact radiance every camera ray sees when the scene is a furnace: a closed, consistently
+// oriented mesh seen from inside, one material whose emission Le and albedo rho (< 1) are the same
+// on every triangle, and no point light in use. Then L_K = Le (1 - rho^(K+1)) / (1 - rho) per
+// channel (notes section 5.1). nullopt for any other scene.
+std::optional<glm::vec3> furnaceRadiance(const Scene& scene, const CameraPose& camera,
+                                         const PathIntegratorSettings& integrator);
+
+// 64-bit FNV-1a over the OBJ, every .mtl beside it and the camera file, then the camera pose, the
+// image size, the depth and the next-event flag. The sampler is not part of it: every unbiased
+// sampler converges to the same image.
+uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
+                      const PathIntegratorSettings& integrator);
+
+// DIR/NAME-dK-KEY.exr, NAME from the scene (its folder's name when the file is scene.obj).
+std::filesystem::path referencePath(const std::filesystem::path& dir, const LoadedScene& loaded,
+                                    const Camera& camera, const PathIntegratorSettings& integrator);
+
+// A short name for a scene in tables and file names: the OBJ's stem, or its folder's name when
+// the stem is the generic "scene".
+std::string sceneName(const std::filesystem::path& objPath);
+
+}  // namespace strata

@@ -1,0 +1,105 @@
+#include "film/accumulation_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "util/error.h"
+
+namespace strata {
+
+AccumulationBuffer::AccumulationBuffer(int width, int height) : width_(width), height_(height) {
+    if (width < 1 || height < 1) throw Error("image size must be at least 1x1");
+    const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+    sum_.resize(n);
+    luminanceSquares_.resize(n);
+    sampleCount_.resize(n);
+    dropped_.resize(n);
+    openPassLuminance_.resize(n);
+    openPassSamples_.resize(n);
+    passMeanSum_.resize(n);
+    passMeanSquares_.resize(n);
+    passCount_.resize(n);
+}
+
+void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value) {
+    if (!std::isfinite(value.x) || !std::isfinite(value.y) || !std::isfinite(value.z)) {
+        ++dropped_[pixel];
+        return;
+    }
+    const glm::dvec3 v(value);
+    const double y = luminance(v);
+    sum_[pixel] += v;
+    luminanceSquares_[pixel] += y * y;
+    ++sampleCount_[pixel];
+    openPassLuminance_[pixel] += y;
+    ++openPassSamples_[pixel];
+}
+
+void AccumulationBuffer::completePass(size_t pixel) {
+    if (openPassSamples_[pixel] == 0) return;
+    const double passMean = openPassLuminance_[pixel] / openPassSamples_[pixel];
+    passMeanSum_[pixel] += passMean;
+    passMeanSquares_[pixel] += passMean * passMean;
+    ++passCount_[pixel];
+    openPassLuminance_[pixel] = 0.0;
+    openPassSamples_[pixel] = 0;
+}
+
+void AccumulationBuffer::clear() {
+    std::fill(sum_.begin(), sum_.end(), glm::dvec3(0.0));
+    std::fill(luminanceSquares_.begin(), luminanceSquares_.end(), 0.0);
+    std::fill(sampleCount_.begin(), sampleCount_.end(), 0u);
+    std::fill(dropped_.begin(), dropped_.end(), 0u);
+    std::fill(openPassLuminance_.begin(), openPassLuminance_.end(), 0.0);
+    std::fill(openPassSamples_.begin(), openPassSamples_.end(), 0u);
+    std::fill(passMeanSum_.begin(), passMeanSum_.end(), 0.0);
+    std::fill(passMeanSquares_.begin(), passMeanSquares_.end(), 0.0);
+    std::fill(passCount_.begin(), passCount_.end(), 0u);
+}
+
+glm::dvec3 AccumulationBuffer::mean(size_t pixel) const {
+    const uint32_t n = sampleCount_[pixel];
+    return n ? sum_[pixel] / static_cast<double>(n) : glm::dvec3(0.0);
+}
+
+namespace {
+// Standard error of a mean of n values from their sum and sum of squares (unbiased variance).
+double standardErrorOfMean(double sum, double squares, uint32_t n) {
+    if (n < 2) return 0.0;
+    const double mean = sum / n;
+    const double variance = std::max(0.0, (squares - sum * mean) / (n - 1));
+    return std::sqrt(variance / n);
+}
+}  // namespace
+
+double AccumulationBuffer::sampleStandardError(size_t pixel) const {
+    return standardErrorOfMean(luminance(sum_[pixel]), luminanceSquares_[pixel], sampleCount_[pixel]);
+}
+
+double AccumulationBuffer::passStandardError(size_t pixel) const {
+    return standardErrorOfMean(passMeanSum_[pixel], passMeanSquares_[pixel], passCount_[pixel]);
+}
+
+uint64_t AccumulationBuffer::droppedSamples() const {
+    return std::accumulate(dropped_.begin(), dropped_.end(), uint64_t{0});
+}
+
+glm::dvec3 AccumulationBuffer::imageMean() const {
+    glm::dvec3 total(0.0);
+    for (size_t i = 0; i < pixelCount(); ++i) total += mean(i);
+    return total / static_cast<double>(pixelCount());
+}
+
+std::array<std::span<double>, 5> AccumulationBuffer::realArrays() {
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "the RGB sums must be packed doubles");
+    return {std::span<double>(glm::value_ptr(sum_[0]), 3 * sum_.size()), luminanceSquares_,
+            openPassLuminance_, passMeanSum_, passMeanSquares_};
+}
+
+std::array<std::span<uint32_t>, 4> AccumulationBuffer::countArrays() {
+    return {sampleCount_, dropped_, openPassSamples_, passCount_};
+}
+
+}  // namespace strata

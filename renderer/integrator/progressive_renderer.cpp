@@ -1,0 +1,155 @@
+#include "integrator/progressive_renderer.h"
+
+#include <algorithm>
+#include <string>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "util/error.h"
+
+#if defined(__SANITIZE_THREAD__)
+#include <sanitizer/tsan_interface.h>
+#endif
+
+namespace strata {
+namespace {
+constexpr int kTileSize = 16;
+constexpr int kMaxThreads = 1024;
+
+// TBB hands tile tasks between threads, and back, through synchronisation inside libtbb, which
+// Debian does not build with ThreadSanitizer: TSan would take every read of a task's body or range
+// for a race. In the TSan build the body announces those hand-offs (a release after it is made or
+// copied, an acquire before it is copied or run); in other builds it is the body itself. The TSan
+// check (scripts/check.sh tsan) then reports only races in what the tiles do.
+#if defined(__SANITIZE_THREAD__)
+char* handOffToken() {
+    static char token;
+    return &token;
+}
+template <typename Body>
+class HandedOffBody {
+public:
+    explicit HandedOffBody(Body body) : body_(std::move(body)) { __tsan_release(handOffToken()); }
+    HandedOffBody(const HandedOffBody& other) : body_((__tsan_acquire(handOffToken()), other.body_)) {
+        __tsan_release(handOffToken());
+    }
+    template <typename Range>
+    void operator()(const Range& range) const {
+        __tsan_acquire(handOffToken());
+        body_(range);
+        __tsan_release(handOffToken());
+    }
+
+private:
+    Body body_;
+};
+template <typename Body>
+HandedOffBody<Body> handedOff(Body body) {
+    return HandedOffBody<Body>(std::move(body));
+}
+void receiveHandOff() { __tsan_acquire(handOffToken()); }
+#else
+template <typename Body>
+Body handedOff(Body body) {
+    return body;
+}
+void receiveHandOff() {}
+#endif
+// Sets the nice value of each thread as it joins the arena (nice values are per thread on Linux).
+class ThreadNiceness : public tbb::task_scheduler_observer {
+public:
+    ThreadNiceness(tbb::task_arena& arena, int niceness)
+        : tbb::task_scheduler_observer(arena), niceness_(niceness) {
+        observe(true);
+    }
+    ~ThreadNiceness() override { observe(false); }
+    void on_scheduler_entry(bool) override {
+        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), niceness_);  // best effort
+    }
+
+private:
+    int niceness_;
+};
+
+}  // namespace
+
+ProgressiveRenderer::ProgressiveRenderer(const Scene& scene, const Camera& camera,
+                                         const RenderSettings& settings)
+    : scene_(scene),
+      camera_(camera),
+      settings_(settings),
+      integrator_(scene, settings.integrator) {
+    if (settings.threads < 0 || settings.threads > kMaxThreads) {
+        throw Error("--threads must be in 1.." + std::to_string(kMaxThreads) + " (0: all cores)");
+    }
+    if (settings.integrator.depth < 0) throw Error("--depth must be at least 0");
+    arena_ = settings.threads > 0 ? std::make_unique<tbb::task_arena>(settings.threads)
+                                  : std::make_unique<tbb::task_arena>();
+    if (settings.niceness > 0) niceness_ = std::make_unique<ThreadNiceness>(*arena_, settings.niceness);
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() = default;
+
+int ProgressiveRenderer::threadCount() const { return arena_->max_concurrency(); }
+
+void ProgressiveRenderer::renderPass(AccumulationBuffer& buffer, uint32_t pass,
+                                     const std::vector<uint8_t>* skip) {
+    renderSteps(buffer, pass, 0, kPathsPerPass, StepControl{nullptr, skip});
+}
+
+void ProgressiveRenderer::renderStep(AccumulationBuffer& buffer, uint32_t pass, int step,
+                                     const StepControl& control) {
+    renderSteps(buffer, pass, step, step + 1, control);
+}
+
+void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass, int firstStep,
+                                      int endStep, const StepControl& control) {
+    const int width = camera_.width();
+    const int height = camera_.height();
+    if (buffer.width() != width || buffer.height() != height) {
+        throw Error("accumulation buffer and camera differ in size");
+    }
+    if (firstStep < 0 || firstStep >= endStep || endStep > kPathsPerPass) {
+        throw Error("renderSteps: bad step range");
+    }
+    const int endRow = control.endRow < 0 ? height : std::min(control.endRow, height);
+    if (control.firstRow < 0 || control.firstRow > endRow) throw Error("renderStep: bad row range");
+    const std::atomic<bool>* cancel = control.cancel;
+    const std::vector<uint8_t>* skip = control.skip;
+    arena_->execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(control.firstRow, endRow, kTileSize, 0, width, kTileSize),
+            handedOff([&](const tbb::blocked_range2d<int>& tile) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return;
+                // Denormals are never needed for radiance; flushing them keeps every thread fast.
+                _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+                _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+                uint64_t rays = 0;
+                uint64_t paths = 0;
+                for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
+                    for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
+                        const size_t pixel = static_cast<size_t>(y) * width + x;
+                        if (skip && (*skip)[pixel]) continue;
+                        for (int step = firstStep; step < endStep; ++step) {
+                            const PathSamples samples(settings_.seed, pixel, pass, step);
+                            const Ray ray = camera_.generateRay(x, y, samples.pixelJitter());
+                            buffer.addSample(pixel, integrator_.radiance(ray, samples, rays));
+                            ++paths;
+                        }
+                        if (endStep == kPathsPerPass) buffer.completePass(pixel);
+                    }
+                }
+                rays_.fetch_add(rays, std::memory_order_relaxed);
+                paths_.fetch_add(paths, std::memory_order_relaxed);
+            }),
+            tbb::simple_partitioner());
+    });
+    receiveHandOff();
+}
+
+}  // namespace strata

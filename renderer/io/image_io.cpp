@@ -1,0 +1,153 @@
+#include "io/image_io.h"
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <system_error>
+#include <unistd.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <stb_image_write.h>
+
+#include "film/accumulation_buffer.h"
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+// Writes through `write(temporaryPath)`, then renames the temporary over `path`.
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::string&)>& write) {
+    const std::filesystem::path temporary =
+        path.string() + ".tmp-" + std::to_string(static_cast<long>(getpid()));
+    try {
+        write(temporary.string());
+        std::filesystem::rename(temporary, path);
+    } catch (const std::exception& e) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        const std::string reason = e.what();
+        throw Error(path.string() + ": cannot write: " + reason);
+    }
+}
+
+void writeExr(const std::string& file, const Image& image) {
+    Imf::Header header(image.width, image.height);
+    for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile out(file.c_str(), header);
+    Imf::FrameBuffer frame;
+    const size_t xStride = sizeof(glm::vec3);
+    const size_t yStride = xStride * image.width;
+    char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
+    frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
+    frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
+    frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+    out.setFrameBuffer(frame);
+    out.writePixels(image.height);
+}
+
+void writePfm(const std::string& file, const Image& image) {
+    std::ofstream out(file, std::ios::binary);
+    // PFM: "PF", size, scale (negative = little-endian), then rows bottom to top.
+    out << "PF\n" << image.width << " " << image.height << "\n-1.0\n";
+    for (int y = image.height - 1; y >= 0; --y) {
+        out.write(reinterpret_cast<const char*>(&image.pixels[static_cast<size_t>(y) * image.width]),
+                  static_cast<std::streamsize>(sizeof(glm::vec3) * image.width));
+    }
+    if (!out.flush()) throw std::runtime_error("write failed");
+}
+
+void writePng(const std::string& file, const Image& image, const PngSettings& settings) {
+    std::vector<uint8_t> bytes(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const glm::vec3 mapped = applyTonemap(image.pixels[i], settings.exposure, settings.tonemap);
+        for (int c = 0; c < 3; ++c) bytes[3 * i + c] = toByte(encodeSrgb(mapped[c]));
+    }
+    if (!stbi_write_png(file.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3)) {
+        throw std::runtime_error("PNG encoder failed");
+    }
+}
+
+}  // namespace
+
+Image Image::fromMeans(const AccumulationBuffer& buffer) {
+    Image image{buffer.width(), buffer.height(), {}};
+    image.pixels.resize(buffer.pixelCount());
+    for (size_t i = 0; i < buffer.pixelCount(); ++i) image.pixels[i] = glm::vec3(buffer.mean(i));
+    return image;
+}
+
+ImageFormat imageFormatOf(const std::filesystem::path& path) {
+    const std::string extension = path.extension().string();
+    if (extension == ".exr") return ImageFormat::Exr;
+    if (extension == ".pfm") return ImageFormat::Pfm;
+    if (extension == ".png") return ImageFormat::Png;
+    throw Error(path.string() + ": unknown image format (use .exr, .pfm or .png)");
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image, const PngSettings& png) {
+    const ImageFormat format = imageFormatOf(path);
+    writeAtomically(path, [&](const std::string& file) {
+        switch (format) {
+            case ImageFormat::Exr: writeExr(file, image); break;
+            case ImageFormat::Pfm: writePfm(file, image); break;
+            case ImageFormat::Png: writePng(file, image, png); break;
+        }
+    });
+}
+
+void writeRgb8Png(const std::filesystem::path& path, int width, int height,
+                  const std::vector<uint8_t>& rgb) {
+    if (imageFormatOf(path) != ImageFormat::Png) throw Error(path.string() + ": must be a .png file");
+    if (width < 1 || height < 1 || rgb.size() != static_cast<size_t>(width) * height * 3) {
+        throw Error(path.string() + ": image size does not match its pixels");
+    }
+    writeAtomically(path, [&](const std::string& file) {
+        if (!stbi_write_png(file.c_str(), width, height, 3, rgb.data(), width * 3)) {
+            throw std::runtime_error("PNG encoder failed");
+        }
+    });
+}
+
+Image readExr(const std::filesystem::path& path) {
+    if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
+    try {
+        Imf::InputFile in(path.string().c_str());
+        const Imath::Box2i window = in.header().dataWindow();
+        Image image;
+        image.width = window.max.x - window.min.x + 1;
+        image.height = window.max.y - window.min.y + 1;
+        if (image.width < 1 || image.height < 1 || image.width > 65536 || image.height > 65536) {
+            throw Error(path.string() + ": unreasonable image size");
+        }
+        for (const char* channel : {"R", "G", "B"}) {
+            if (!in.header().channels().findChannel(channel)) {
+                throw Error(path.string() + ": no " + channel + " channel");
+            }
+        }
+        image.pixels.resize(static_cast<size_t>(image.width) * image.height);
+        const size_t xStride = sizeof(glm::vec3);
+        const size_t yStride = xStride * image.width;
+        // OpenEXR addresses the buffer by absolute pixel coordinates: shift the base by the
+        // data window's origin.
+        char* base = reinterpret_cast<char*>(image.pixels.data()) -
+                     static_cast<ptrdiff_t>(window.min.x) * xStride -
+                     static_cast<ptrdiff_t>(window.min.y) * yStride;
+        Imf::FrameBuffer frame;
+        frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
+        frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
+        frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+        in.setFrameBuffer(frame);
+        in.readPixels(window.min.y, window.max.y);
+        return image;
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw Error(path.string() + ": not a readable EXR file (" + e.what() + ")");
+    }
+}
+
+}  // namespace strata

@@ -1,0 +1,40 @@
+#pragma once
+// Images on disk. EXR (OpenEXR, 32-bit float) and PFM hold linear radiance; PNG (stb) is
+// tonemapped sRGB. Every write goes to a temporary file beside the target and is renamed over it
+// only when complete, so a failed or interrupted write never leaves a half-written output.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+#include <glm/vec3.hpp>
+
+#include "io/tonemap.h"
+
+namespace strata {
+
+class AccumulationBuffer;
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec3> pixels;  // row-major, top row first, linear RGB
+
+    static Image fromMeans(const AccumulationBuffer& buffer);
+};
+
+struct PngSettings {
+    float exposure = 0.0f;
+    Tonemap tonemap = Tonemap::Clamp;
+};
+
+enum class ImageFormat { Exr, Pfm, Png };
+// The format named by the path's extension; throws strata::Error for any other.
+ImageFormat imageFormatOf(const std::filesystem::path& path);
+
+void writeImage(const std::filesystem::path& path, const Image& image, const PngSettings& png = {});
+// Writes already display-encoded 8-bit RGB (top row first) as PNG, e.g. a screenshot of the viewer.
+void writeRgb8Png(const std::filesystem::path& path, int width, int height,
+                  const std::vector<uint8_t>& rgb);
+// Reads the R, G, B channels of an EXR file as linear float; throws strata::Error naming the file.
+Image readExr(const std::filesystem::path& path);
+
+}  // namespace strata

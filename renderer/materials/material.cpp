@@ -1,0 +1,98 @@
+#include "materials/material.h"
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "util/constants.h"
+#include "sampling/hemisphere.h"
+
+namespace strata {
+namespace {
+
+bool isZero(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
+float average(const glm::vec3& v) { return (v.x + v.y + v.z) / 3.0f; }
+
+}  // namespace
+
+LayeredBsdf::LayeredBsdf(const Material& material)
+    : diffuse_(material.diffuse),
+      specular_(material.specular),
+      hasDiffuse_(!isZero(material.diffuse)),
+      hasSpecular_(!isZero(material.specular)),
+      distribution_(ggxAlphaFromRoughness(material.roughness)) {
+    if (hasSpecular_) {
+        albedoTable_.emplace(distribution_);
+        const glm::vec2 average = albedoTable_->averageAlbedo();
+        const glm::vec3 averageF = specular_ * average.x + (glm::vec3(1.0f) - specular_) * average.y;
+        diffuseNormalisation_ = diffuse_ / (kPi * glm::max(glm::vec3(1.0f) - averageF, 1e-6f));
+    } else {
+        diffuseNormalisation_ = diffuse_ * (1.0f / kPi);
+    }
+}
+
+glm::vec3 LayeredBsdf::specularAlbedo(float mu) const {
+    if (!hasSpecular_) return glm::vec3(0.0f);
+    const glm::vec2 e = albedoTable_->albedo(mu);
+    return specular_ * e.x + (glm::vec3(1.0f) - specular_) * e.y;
+}
+
+glm::vec3 LayeredBsdf::tabulatedAlbedo(const glm::vec3& wo) const {
+    const glm::vec3 e = specularAlbedo(wo.z);
+    return e + diffuse_ * (glm::vec3(1.0f) - e);
+}
+
+glm::vec3 LayeredBsdf::evaluate(const glm::vec3& wo, const glm::vec3& wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+    if (!hasSpecular_) return diffuseNormalisation_;
+    glm::vec3 f(0.0f);
+    if (hasDiffuse_) {
+        f = diffuseNormalisation_ * (glm::vec3(1.0f) - specularAlbedo(wo.z)) *
+            (glm::vec3(1.0f) - specularAlbedo(wi.z));
+    }
+    const glm::vec3 h = glm::normalize(wo + wi);
+    return f + schlickFresnel(specular_, glm::dot(wo, h)) * distribution_.reflectance(wo, wi);
+}
+
+float LayeredBsdf::specularProbability(const glm::vec3& wo) const {
+    if (!hasSpecular_) return 0.0f;
+    if (!hasDiffuse_) return 1.0f;
+    const glm::vec3 e = specularAlbedo(wo.z);
+    const float specular = average(e);
+    const float diffuse = average(diffuse_ * (glm::vec3(1.0f) - e));
+    // Both lobes keep some probability so that the mixture's density covers each lobe.
+    return std::clamp(specular / std::max(specular + diffuse, 1e-6f), 0.05f, 0.95f);
+}
+
+std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, glm::vec2 u,
+                                              float lobeChoice) const {
+    const float pSpecular = specularProbability(wo);
+    if (pSpecular == 0.0f) {
+        // Pure Lambertian: cos / pdf is pi exactly, so the weight is Kd with no rounding from a
+        // pdf division (the cosine-sampled furnace then has zero variance, notes section 5.1).
+        const glm::vec3 wi = sampleCosineHemisphere(u);
+        return BsdfSample{wi, cosineHemispherePdf(wi), diffuseNormalisation_ * kPi};
+    }
+    glm::vec3 wi;
+    if (lobeChoice < pSpecular) {
+        const glm::vec3 h = distribution_.sampleVisibleNormal(wo, u);
+        wi = 2.0f * glm::dot(wo, h) * h - wo;
+        if (wi.z <= 0.0f) return std::nullopt;
+        wi = glm::normalize(wi);
+    } else {
+        wi = sampleCosineHemisphere(u);
+    }
+    const float density = pdf(wo, wi);
+    if (!(density > 0.0f) || wi.z <= 0.0f) return std::nullopt;
+    return BsdfSample{wi, density, evaluate(wo, wi) * (wi.z / density)};
+}
+
+float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    const float pSpecular = specularProbability(wo);
+    float density = (1.0f - pSpecular) * cosineHemispherePdf(wi);
+    if (pSpecular > 0.0f) density += pSpecular * distribution_.reflectionPdf(wo, wi);
+    return density;
+}
+
+}  // namespace strata

@@ -1,0 +1,102 @@
+#include "sampling/direction_sampler.h"
+
+#include "sampling/hemisphere.h"
+#include "util/name_table.h"
+#include "sampling/strata24.h"
+#include "sampling/strata24_cosine.h"
+
+namespace strata {
+namespace {
+constexpr NameTable<SamplerKind, 6> kSamplers{{{{"uniform", SamplerKind::Uniform},
+                                                {"strata24", SamplerKind::Strata24},
+                                                {"cosine", SamplerKind::Cosine},
+                                                {"strata24-cosine", SamplerKind::Strata24Cosine},
+                                                {"strata24-qmc", SamplerKind::Strata24Qmc},
+                                                {"bsdf", SamplerKind::Bsdf}}}};
+
+// A direction from a hemisphere sampler whose cos / pdf is known in closed form: the weight is
+// f * (cos / pdf) with no pdf division, so a Lambertian weight is exactly Kd * (pi / pi).
+template <class Bsdf>
+SampledDirection hemisphereSample(const Bsdf& bsdf, const glm::vec3& wo,
+                                  const glm::vec3& wi, float cosOverPdf, int stratum) {
+    const float pdf = wi.z > 0.0f ? wi.z / cosOverPdf : 0.0f;
+    return {wi, pdf, bsdf.evaluate(wo, wi) * cosOverPdf, stratum};
+}
+
+}  // namespace
+
+std::optional<SamplerKind> parseSamplerKind(std::string_view name) { return kSamplers.parse(name); }
+std::string_view samplerName(SamplerKind kind) { return kSamplers.name(kind); }
+std::string samplerNames() { return kSamplers.joined(); }
+
+bool stratifies(SamplerKind kind) {
+    return kind == SamplerKind::Strata24 || kind == SamplerKind::Strata24Cosine ||
+           kind == SamplerKind::Strata24Qmc;
+}
+
+template <class Bsdf>
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
+                                 const Bsdf& bsdf, const glm::vec3& wo) {
+    switch (kind) {
+        case SamplerKind::Uniform: {
+            const glm::vec3 d = sampleUniformHemisphere(samples.bouncePoint(bounce));
+            return hemisphereSample(bsdf, wo, d, d.z * kHemisphereSolidAngle, -1);
+        }
+        case SamplerKind::Strata24:
+        case SamplerKind::Strata24Qmc: {
+            const int id = samples.stratum(bounce);
+            const glm::vec2 u = kind == SamplerKind::Strata24 ? samples.bouncePoint(bounce)
+                                                              : samples.stratumSequencePoint(bounce);
+            const glm::vec3 d = sampleStratum(id, u);
+            return hemisphereSample(bsdf, wo, d, d.z * kHemisphereSolidAngle, id);
+        }
+        case SamplerKind::Cosine: {
+            const glm::vec3 d = sampleCosineHemisphere(samples.bouncePoint(bounce));
+            return hemisphereSample(bsdf, wo, d, kPi, -1);
+        }
+        case SamplerKind::Strata24Cosine: {
+            const int id = samples.stratum(bounce);
+            const glm::vec3 d = sampleStratumCosine(id, samples.bouncePoint(bounce));
+            const auto cosOverPdf =
+                static_cast<float>(kStrataCount * stratumProjectedSolidAngle(id));
+            return hemisphereSample(bsdf, wo, d, cosOverPdf, id);
+        }
+        case SamplerKind::Bsdf: {
+            const auto s = bsdf.sample(wo, samples.bouncePoint(bounce), samples.lobeChoice(bounce));
+            if (!s) return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
+            return {s->direction, s->pdf, s->weight, -1};
+        }
+    }
+    return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
+}
+
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce) {
+    Material white;
+    white.diffuse = glm::vec3(1.0f);
+    return sampleDirection(kind, samples, bounce, LambertianBsdf(white), glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
+template <class Bsdf>
+float directionPdf(SamplerKind kind, const Bsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi) {
+    if (wi.z <= 0.0f) return 0.0f;
+    switch (kind) {
+        case SamplerKind::Uniform:
+        case SamplerKind::Strata24:
+        case SamplerKind::Strata24Qmc: return 1.0f / kHemisphereSolidAngle;
+        case SamplerKind::Cosine: return cosineHemispherePdf(wi);
+        case SamplerKind::Strata24Cosine:
+            return wi.z / static_cast<float>(kStrataCount *
+                                             stratumProjectedSolidAngle(classifyStratum(wi)));
+        case SamplerKind::Bsdf: return bsdf.pdf(wo, wi);
+    }
+    return 0.0f;
+}
+
+template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int, const LayeredBsdf&,
+                                          const glm::vec3&);
+template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int,
+                                          const LambertianBsdf&, const glm::vec3&);
+template float directionPdf(SamplerKind, const LayeredBsdf&, const glm::vec3&, const glm::vec3&);
+template float directionPdf(SamplerKind, const LambertianBsdf&, const glm::vec3&, const glm::vec3&);
+
+}  // namespace strata

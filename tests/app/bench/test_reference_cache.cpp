@@ -1,0 +1,69 @@
+#include <doctest/doctest.h>
+
+#include <fstream>
+
+#include "bench/reference_cache.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+const auto kFurnace = [] { return test::sourceDir() / "assets" / "furnace" / "furnace.obj"; };
+const auto kCornell = [] { return test::sourceDir() / "assets" / "cornell" / "cornell.obj"; };
+
+PathIntegratorSettings depth(int k) {
+    PathIntegratorSettings settings;
+    settings.depth = k;
+    return settings;
+}
+}  // namespace
+
+TEST_CASE("reference cache: the furnace is analytic, with notes section 5.1's value") {
+    const LoadedScene furnace = loadScene(kFurnace());
+    const auto exact = furnaceRadiance(furnace.scene, furnace.settings.pose, depth(5));
+    REQUIRE(exact);
+    CHECK(exact->x == doctest::Approx(1.96875));  // Le = 1, rho = 0.5: (1 - 0.5^6) / 0.5
+    CHECK(furnaceRadiance(furnace.scene, furnace.settings.pose, depth(0))->y == doctest::Approx(1.0));
+    // Seen from outside, the furnace is not a furnace.
+    CameraPose outside = furnace.settings.pose;
+    outside.position = glm::vec3(0.0f, 0.0f, 5.0f);
+    CHECK_FALSE(furnaceRadiance(furnace.scene, outside, depth(5)));
+
+    const LoadedScene cornell = loadScene(kCornell());
+    CHECK_FALSE(furnaceRadiance(cornell.scene, cornell.settings.pose, depth(5)));
+}
+
+TEST_CASE("reference cache: a furnace with a hole is not analytic") {
+    const LoadedScene furnace = loadScene(kFurnace());
+    MeshData open = furnace.scene.mesh();
+    open.triangles.pop_back();
+    open.triangleMaterials.pop_back();
+    const Scene scene(std::move(open));
+    CHECK_FALSE(furnaceRadiance(scene, furnace.settings.pose, depth(5)));
+}
+
+TEST_CASE("reference cache: the key changes with the files, camera and depth, and only then") {
+    const auto dir = test::scratchDir("reference-key");
+    for (const char* name : {"cornell.obj", "cornell.mtl", "cornell.json"}) {
+        std::filesystem::copy_file(test::sourceDir() / "assets" / "cornell" / name, dir / name);
+    }
+    const auto keyOf = [&](int k, int width) {
+        const LoadedScene loaded = loadScene(dir / "cornell.obj");
+        const Camera camera(loaded.settings.pose, width, 16);
+        return referenceKey(loaded, camera, depth(k));
+    };
+    const uint64_t base = keyOf(5, 16);
+    CHECK(keyOf(5, 16) == base);
+    CHECK(keyOf(4, 16) != base);
+    CHECK(keyOf(5, 17) != base);
+    std::ofstream(dir / "cornell.mtl", std::ios::app) << "\n# edited\n";
+    CHECK(keyOf(5, 16) != base);
+
+    const LoadedScene loaded = loadScene(dir / "cornell.obj");
+    const Camera camera(loaded.settings.pose, 16, 16);
+    const auto path = referencePath("refs", loaded, camera, depth(3));
+    CHECK(path.parent_path() == "refs");
+    CHECK(path.filename().string().rfind("cornell-d3-", 0) == 0);
+    CHECK(path.extension() == ".exr");
+    CHECK(sceneName("x/cornell_point/scene.obj") == "cornell_point");
+}

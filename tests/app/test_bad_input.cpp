@@ -1,0 +1,252 @@
+// Bad input, table-driven: every loader and option answers with one line "strata: ..." naming the
+// file and line or the option, a non-zero exit, no crash or hang, and an existing output file left
+// untouched. The same table is the README's reliability section.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "util/error.h"
+#include "io/image_io.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+
+// A valid scene to mutate: a unit quad light above a floor, with its material library and camera.
+const std::string kObj =
+    "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl white\nf 1 3 2\nf 1 4 3\n";
+const std::string kMtl = "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
+const std::string kCamera =
+    R"({"position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60,"width":4,"height":4})";
+
+struct BadInputCase {
+    const char* what;       // the README's description of the case
+    std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
+    const char* arguments;  // strata's arguments; {dir} is the case's folder
+    const char* expected;   // text the one error line must contain
+};
+
+// Files a case does not name are the valid ones above.
+const std::vector<BadInputCase> kCliCases = {
+    // OBJ
+    {"OBJ file missing", {}, "render {dir}/absent.obj", "absent.obj: no such scene file"},
+    {"OBJ path is a directory", {}, "render {dir}", "no such scene file"},
+    {"OBJ malformed number", {{"s.obj", "mtllib s.mtl\nv 0 0 0\nv 1 x 0\n"}}, "render {dir}/s.obj",
+     "s.obj:3: 'x' is not a number"},
+    {"OBJ vertex with 2 coordinates", {{"s.obj", "v 0 0\n"}}, "render {dir}/s.obj",
+     "s.obj:1: 'v' takes 3 to 7 numbers, got 2"},
+    {"OBJ coordinate beyond float range", {{"s.obj", "v 0 0 1e39\n"}}, "render {dir}/s.obj",
+     "s.obj:1: '1e39' is out of range"},
+    {"OBJ coordinate beyond double range", {{"s.obj", "v 0 0 1e400\n"}}, "render {dir}/s.obj",
+     "s.obj:1: '1e400' is out of range"},
+    {"OBJ normal is NaN", {{"s.obj", "vn 0 nan 1\n"}}, "render {dir}/s.obj",
+     "s.obj:1: 'nan' is not a finite number"},
+    {"OBJ face index out of range", {{"s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}},
+     "render {dir}/s.obj", "s.obj:4: vertex index 4 is out of range"},
+    {"OBJ relative face index before the first vertex", {{"s.obj", "v 0 0 0\nf -1 -2 -3\n"}},
+     "render {dir}/s.obj", "s.obj:2: vertex index -2 is out of range"},
+    {"OBJ face index 0", {{"s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"}}, "render {dir}/s.obj",
+     "s.obj:4: '0' is not a face vertex"},
+    {"OBJ face of 2 vertices", {{"s.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"}}, "render {dir}/s.obj",
+     "s.obj:3: a face needs at least 3 vertices"},
+    {"OBJ face index overflowing", {{"s.obj", "v 0 0 0\nf 1 1 99999999999999999999\n"}},
+     "render {dir}/s.obj", "s.obj:2: '99999999999999999999' is not a face vertex"},
+    {"OBJ usemtl without a name", {{"s.obj", "usemtl\n"}}, "render {dir}/s.obj",
+     "s.obj:1: usemtl needs one material name"},
+    {"OBJ usemtl of an undefined material",
+     {{"s.obj", "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl nothing\nf 1 2 3\n"}},
+     "render {dir}/s.obj", "material [ 'nothing' ] not found"},
+    {"OBJ mtllib file missing", {{"s.obj", "mtllib gone.mtl\n"}}, "render {dir}/s.obj",
+     "gone.mtl: cannot open material library"},
+    {"OBJ empty", {{"s.obj", ""}}, "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
+    {"OBJ only degenerate and NaN triangles",
+     {{"s.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv nan 0 0\nf 1 2 3\nf 1 2 4\n"}}, "render {dir}/s.obj",
+     "s.obj: the scene has no usable triangles"},
+    {"OBJ binary garbage", {{"s.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0v\xff\xfe f \x80", 17)}},
+     "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
+    // MTL
+    {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
+     "s.mtl:2: 'abc' is not a number"},
+    {"MTL Kd before newmtl", {{"s.mtl", "Kd 0.5 0.5 0.5\n"}}, "render {dir}/s.obj",
+     "s.mtl:1: 'Kd' before any newmtl"},
+    {"MTL Kd above 1", {{"s.mtl", "newmtl white\nKd 1.5 0.5 0.5\n"}}, "render {dir}/s.obj",
+     "material 'white' has Kd above 1"},
+    {"MTL negative Ke", {{"s.mtl", "newmtl white\nKe -1 0 0\n"}}, "render {dir}/s.obj",
+     "material 'white' has a negative or non-finite Kd, Ke, Ks or Pr"},
+    {"MTL Ke is Inf", {{"s.mtl", "newmtl white\nKe inf 1 1\n"}}, "render {dir}/s.obj",
+     "s.mtl:2: 'inf' is not a finite number"},
+    {"MTL newmtl without a name", {{"s.mtl", "newmtl\n"}}, "render {dir}/s.obj",
+     "s.mtl:1: newmtl needs one material name"},
+    // Camera JSON
+    {"camera JSON syntax error", {{"s.json", "{\n\"position\": [0,0,\n}"}}, "render {dir}/s.obj",
+     "s.json: invalid JSON: parse error at line 3"},
+    {"camera JSON not an object", {{"s.json", "[1, 2, 3]"}}, "render {dir}/s.obj",
+     "s.json: expected a JSON object"},
+    {"camera JSON key missing", {{"s.json", R"({"position":[0,0,0]})"}}, "render {dir}/s.obj",
+     "s.json: missing key \"look_at\""},
+    {"camera JSON vector of strings",
+     {{"s.json", R"({"position":["a",0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40})"}},
+     "render {dir}/s.obj", "s.json: \"position\" must be an array of 3 numbers"},
+    {"camera JSON value beyond float range",
+     {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":1e300})"}},
+     "render {dir}/s.obj", "s.json: \"fov_y\" must be finite and within float range"},
+    {"camera JSON fov of 180",
+     {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":180})"}},
+     "render {dir}/s.obj", "s.json: fov_y must be in (0, 180) degrees"},
+    {"camera JSON up parallel to the view",
+     {{"s.json", R"({"position":[0,0,0],"look_at":[0,1,0],"up":[0,1,0],"fov_y":40})"}},
+     "render {dir}/s.obj", "s.json: up must not be parallel to the view direction"},
+    {"camera JSON width 0",
+     {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40,"width":0})"}},
+     "render {dir}/s.obj", "s.json: \"width\" must be an integer in 1..65536"},
+    {"camera JSON point light without intensity",
+     {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40,"point_lights":[{"position":[0,1,0]}]})"}},
+     "render {dir}/s.obj", "s.json: missing key \"intensity\""},
+    {"--camera file missing", {}, "render {dir}/s.obj --camera {dir}/none.json",
+     "none.json: cannot open camera file"},
+    // strata render options
+    {"render without a scene", {}, "render", "scene is required"},
+    {"render --spp not a multiple of 24", {}, "render {dir}/s.obj --spp 25", "--spp: must be a positive multiple of 24"},
+    {"render --spp 0", {}, "render {dir}/s.obj --spp 0", "--spp: must be a positive multiple of 24"},
+    {"render --spp not a number", {}, "render {dir}/s.obj --spp many", "--spp"},
+    {"render --depth -1", {}, "render {dir}/s.obj --depth -1", "--depth: must be in 0..100000"},
+    {"render --sampler unknown", {}, "render {dir}/s.obj --sampler sobol", "--sampler: unknown sampler 'sobol'"},
+    {"render --threads too many", {}, "render {dir}/s.obj --threads 5000", "--threads: must be in 0..1024"},
+    {"render --width too large", {}, "render {dir}/s.obj --width 70000", "--width: must be in 1..65536"},
+    {"render --height negative", {}, "render {dir}/s.obj --height -4", "--height: must be in 1..65536"},
+    {"render --tonemap unknown", {}, "render {dir}/s.obj --tonemap filmic", "--tonemap: unknown tonemap 'filmic'"},
+    {"render --out unknown format", {}, "render {dir}/s.obj --out {dir}/image.bmp",
+     "image.bmp: unknown image format"},
+    {"render --out into a missing folder", {}, "render {dir}/s.obj --spp 24 --out {dir}/no/such/dir.exr",
+     "dir.exr: cannot write"},
+    {"render unknown option", {}, "render {dir}/s.obj --frobnicate", "--frobnicate"},
+    {"unknown subcommand", {}, "paint", "unknown command 'paint'"},
+    // strata samples options
+    {"samples --passes 0", {}, "samples --passes 0", "--passes: must be in 1..1000000"},
+    {"samples --passes negative", {}, "samples --passes -3", "--passes"},
+    {"samples --depth 0", {}, "samples --depth 0", "--depth: must be in 1..64"},
+    {"samples --sampler unknown", {}, "samples --sampler halton", "--sampler: unknown sampler 'halton'"},
+    {"samples --pixel not a number", {}, "samples --pixel x", "--pixel"},
+};
+
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+}  // namespace
+
+TEST_CASE("bad input: every case is one 'strata:' line naming the culprit, a non-zero exit, no clobbering") {
+    int index = 0;
+    for (const BadInputCase& c : kCliCases) {
+        const std::string what = c.what;
+        CAPTURE(what);
+        const auto dir = test::scratchDir("bad-input-" + std::to_string(index++));
+        std::map<std::string, std::string> files = {{"s.obj", kObj}, {"s.mtl", kMtl}, {"s.json", kCamera}};
+        for (const auto& [name, text] : c.files) files[name] = text;
+        for (const auto& [name, text] : files) std::ofstream(dir / name, std::ios::binary) << text;
+        // An earlier result that a failed render must leave as it was.
+        const std::string precious = "an earlier render\n";
+        std::ofstream(dir / "keep.exr", std::ios::binary) << precious;
+
+        std::string arguments = replaceAll(c.arguments, "{dir}", dir.string());
+        // Render cases write over keep.exr if they get that far, and take one pass.
+        if (arguments.rfind("render", 0) == 0) {
+            if (arguments.find("--out") == std::string::npos) arguments += " --out " + (dir / "keep.exr").string();
+            if (arguments.find("--spp") == std::string::npos) arguments += " --spp 24";
+        }
+        const test::CommandResult result = test::runStrata(arguments);
+        CAPTURE(arguments);
+        CAPTURE(result.err);
+        CHECK(result.exitCode >= 1);
+        CHECK(result.exitCode <= 2);  // 1 for bad input, 2 for bad usage; never a signal
+        // Exactly one line says what is wrong, and it is the last thing printed.
+        std::vector<std::string> errorLines;
+        std::istringstream lines(result.err);
+        std::string lastLine;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("strata: ", 0) == 0) errorLines.push_back(line);
+            if (!line.empty()) lastLine = line;
+        }
+        REQUIRE(errorLines.size() == 1);
+        CHECK(errorLines[0] == lastLine);
+        CHECK(errorLines[0].find(c.expected) != std::string::npos);
+        CHECK(slurp(dir / "keep.exr") == precious);
+        // No temporary file left behind either.
+        size_t entries = 0;
+        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++entries;
+        CHECK(entries == files.size() + 1);
+        std::filesystem::remove_all(dir);
+    }
+}
+
+TEST_CASE("bad input: the valid scene of the table renders, and over an existing output") {
+    // The table's base scene is good, so each case fails for its own reason alone.
+    const auto dir = test::scratchDir("bad-input-good");
+    std::ofstream(dir / "s.obj") << kObj;
+    std::ofstream(dir / "s.mtl") << kMtl;
+    std::ofstream(dir / "s.json") << kCamera;
+    std::ofstream(dir / "keep.exr") << "an earlier render\n";
+    const auto result = test::runStrata("render " + (dir / "s.obj").string() + " --spp 24 --depth 1 --out " +
+                                        (dir / "keep.exr").string());
+    CAPTURE(result.err);
+    CHECK(result.exitCode == 0);
+    const Image image = readExr(dir / "keep.exr");
+    CHECK(image.width == 4);
+    CHECK(image.height == 4);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bad input: EXR references that are missing, empty, not EXR or truncated are refused") {
+    const auto dir = test::scratchDir("bad-exr");
+    Image good{8, 8, std::vector<glm::vec3>(64, glm::vec3(0.25f))};
+    writeImage(dir / "good.exr", good);
+    const std::string bytes = slurp(dir / "good.exr");
+    std::ofstream(dir / "empty.exr", std::ios::binary) << "";
+    std::ofstream(dir / "text.exr", std::ios::binary) << "P3 this is not an EXR\n";
+    std::ofstream(dir / "truncated.exr", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    std::ofstream(dir / "header.exr", std::ios::binary) << bytes.substr(0, 40);
+    std::string corrupt = bytes;
+    for (size_t i = bytes.size() / 2; i < bytes.size(); i += 7) corrupt[i] = static_cast<char>(~corrupt[i]);
+    std::ofstream(dir / "corrupt.exr", std::ios::binary) << corrupt;
+    std::filesystem::create_directories(dir / "folder.exr");
+
+    const struct {
+        const char* file;
+        const char* expected;
+    } cases[] = {{"absent.exr", "absent.exr: no such EXR file"},
+                 {"folder.exr", "folder.exr: no such EXR file"},
+                 {"empty.exr", "empty.exr: not a readable EXR file"},
+                 {"text.exr", "text.exr: not a readable EXR file"},
+                 {"truncated.exr", "truncated.exr: not a readable EXR file"},
+                 {"header.exr", "header.exr: not a readable EXR file"},
+                 {"corrupt.exr", "corrupt.exr: not a readable EXR file"}};
+    for (const auto& c : cases) {
+        const std::string file = c.file;
+        CAPTURE(file);
+        std::string message = "no error";
+        try {
+            readExr(dir / c.file);
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        CHECK(message.find(c.expected) != std::string::npos);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+    CHECK(readExr(dir / "good.exr").pixels[63] == glm::vec3(0.25f));
+    std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,277 @@
+// The viewer's UI logic under synthetic Dear ImGui input in an offscreen (OSMesa) context: the
+// panel's controls reach the render worker. ImGui 1.86 predates io.AddKeyEvent, so input goes
+// through io.MousePos / io.MouseDown.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <thread>
+#include <vector>
+#include <imgui.h>
+
+#include "io/image_io.h"
+#include "test_support.h"
+#include "viewer_run.h"
+
+using namespace strata;
+using namespace strata::viewer;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 720;
+
+struct Harness {
+    std::unique_ptr<OffscreenContext> context = OffscreenContext::create(OffscreenBackend::OsMesa);
+    FrameTarget target = FrameTarget::offscreen(kWidth, kHeight);
+    ImGuiSession imgui;
+    Viewer viewer;
+
+    explicit Harness(const ViewerSettings& settings,
+                     const std::filesystem::path& scene = test::sourceDir() / "assets/cornell/cornell.obj")
+        : viewer(std::make_shared<const LoadedScene>(loadScene(scene)), settings, nullptr) {
+        frame();
+        frame();  // the panel's layout settles on its second frame
+    }
+    void frame() {
+        beginOffscreenFrame(kWidth, kHeight, 1.0f / 60.0f);
+        viewer.frame(target);
+    }
+    // Moves to the control's point, presses, releases: one click, as ImGui sees it over 3 frames;
+    // then one more frame, so that what the click opened (a combo's popup, placed on its second
+    // frame) is where the next click looks for it.
+    void click(const std::string& control, float fraction = 0.5f) {
+        const auto& controls = viewer.panel().controls();
+        REQUIRE_MESSAGE(controls.count(control) == 1, "no control " << control);
+        const auto rect = controls.at(control);
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(rect.min.x + fraction * (rect.max.x - rect.min.x), rect.centre().y);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        frame();
+    }
+    // Runs frames until `done` holds for the displayed snapshot; fails after a generous bound
+    // (a stuck worker, not a slow one: it is not a timing assertion).
+    template <typename Done>
+    const WorkerSnapshot& waitFor(Done done) {
+        for (int i = 0; i < 1500; ++i) {
+            frame();
+            const WorkerSnapshot* shown = viewer.shownSnapshot();
+            if (shown && done(*shown)) return *shown;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        FAIL("the render worker never reached the expected state");
+        return *viewer.shownSnapshot();
+    }
+};
+
+ViewerSettings smallSingleView() {
+    ViewerSettings settings;
+    settings.split = false;
+    settings.single = {SamplerKind::Uniform, 5};
+    settings.resolutionScale = 0.125f;  // 60x90 pixels: each step is cheap
+    settings.threads = 1;
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("choosing strata24 in the sampler combo changes the sampler and restarts accumulation") {
+    Harness h(smallSingleView());
+    const uint64_t before = h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 2; }).generation;
+    CHECK(h.viewer.workerConfig().sides.at(0).sampler == SamplerKind::Uniform);
+    h.click("sampler");  // opens the combo
+    h.click("sampler/strata24");
+    CHECK(h.viewer.settings().single.sampler == SamplerKind::Strata24);
+    CHECK(h.viewer.workerConfig().sides.at(0).sampler == SamplerKind::Strata24);
+    const auto& restarted = h.waitFor([&](const WorkerSnapshot& s) { return s.generation > before; });
+    CHECK(restarted.spp <= 24);  // accumulation began again
+}
+
+TEST_CASE("the depth slider sets the recursion depth K") {
+    Harness h(smallSingleView());
+    h.click("depth K", 0.99f);  // at the slider's right end
+    CHECK(h.viewer.settings().single.depth == 64);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 64);
+    h.click("depth K", 0.01f);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 0);
+}
+
+TEST_CASE("a target spp set in the panel stops rendering there") {
+    Harness h(smallSingleView());
+    // The "+" button right of the field adds one pass (24) per click.
+    const auto& controls = h.viewer.panel().controls();
+    REQUIRE(controls.count("target spp") == 1);
+    const float plusFraction = 1.0f - 0.5f * ImGui::GetFrameHeight() /
+                                          (controls.at("target spp").max.x - controls.at("target spp").min.x);
+    h.click("target spp", plusFraction);
+    h.click("target spp", plusFraction);
+    REQUIRE(h.viewer.workerConfig().targetSpp == 48);
+    // On a fast run the worker may already rest at 24 spp between the two clicks: wait for the
+    // rest that follows the second one. It must stop exactly at the target, not beyond.
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp >= 48; });
+    CHECK(done.spp == 48);
+    CHECK(done.passes == 2);
+    const uint64_t paths = done.paths;
+    // Resting: more frames and time bring no new samples.
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);
+    CHECK(h.viewer.shownSnapshot()->spp == 48);
+}
+
+TEST_CASE("a scene that fails to load leaves the old one rendering") {
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const auto dir = test::scratchDir("viewer-bad-scene");
+    const auto bad = dir / "bad.obj";
+    std::ofstream(bad) << "v 0 0 0\nf 1 2 3\n";  // indices out of range
+    h.viewer.openScene(bad);
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("bad.obj") != std::string::npos);
+    h.viewer.openScene(dir / "missing.obj");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sliders") {
+    // The furnace (albedo 0.5, Le 1): the bound Le a^(K+1) / (1 - a) = 0.5^K is at most 1e-3
+    // first at K = 10.
+    ViewerSettings settings = smallSingleView();
+    settings.epsilon = 1e-3f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    h.click("depth from epsilon");
+    REQUIRE(h.viewer.settings().depthFromEpsilon);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 10);
+    CHECK(h.viewer.settings().halves[0].depth == 10);
+    CHECK(h.viewer.settings().halves[1].depth == 10);
+    h.click("depth K", 0.01f);  // disabled: the click changes nothing
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 10);
+    h.click("depth from epsilon");
+    h.click("depth K", 0.01f);
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 0);
+}
+
+TEST_CASE("depth from epsilon leaves the depth alone where no finite depth bounds the error") {
+    ViewerSettings settings = smallSingleView();
+    settings.single.depth = 3;
+    Harness h(settings, test::sharedDir() / "scenes/cornell_point/scene.obj");
+    h.click("depth from epsilon");
+    CHECK(h.viewer.workerConfig().sides.at(0).depth == 3);  // point lights: no radiance bound
+}
+
+TEST_CASE("a noise threshold stops every pixel, then rendering, and the mask view shows them done") {
+    ViewerSettings settings = smallSingleView();
+    settings.single = {SamplerKind::Strata24, 2};
+    settings.noiseThreshold = 0.05f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
+    REQUIRE(done.sides.size() == 1);
+    CHECK(done.sides[0].activePixels == 0);
+    CHECK(done.passes >= 4);  // AdaptiveSettings::minPasses
+    const auto& flags = done.sides[0].image.errorAndDone;
+    for (size_t p = 1; p < flags.size(); p += 2) REQUIRE(flags[p] == 1.0f);
+    // Every pixel's relative error is under the threshold, and the mean is the exact furnace
+    // value at depth 2, Le (1 + a + a^2) = 1.75, within the threshold's statistical slack.
+    const auto& pixels = done.sides[0].image.meanAndCount;
+    double sum = 0.0;
+    for (size_t p = 0; p < flags.size() / 2; ++p) {
+        CHECK(flags[2 * p] <= 0.05f);
+        sum += pixels[4 * p];
+    }
+    CHECK(sum / static_cast<double>(flags.size() / 2) == doctest::Approx(1.75).epsilon(0.01));
+    const uint64_t paths = done.paths;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);  // resting
+
+    // The furnace is white under the clamp tonemap; the mask view washes done pixels green.
+    const auto colour = h.target.readRgb();
+    h.viewer.settings().display.view = DisplayView::AdaptiveMask;
+    h.frame();
+    const auto mask = h.target.readRgb();
+    const size_t at = 3 * (static_cast<size_t>(kHeight / 2) * kWidth + kWidth - 10);  // right of the panel
+    CHECK(int(colour[at + 0]) == 255);
+    CHECK(int(colour[at + 1]) == 255);
+    CHECK(int(mask[at + 1]) > int(mask[at + 0]) + 60);
+    CHECK(int(mask[at + 1]) > int(mask[at + 2]) + 60);
+}
+
+TEST_CASE("a target render time stops rendering once that much time is spent") {
+    ViewerSettings settings = smallSingleView();
+    settings.targetSeconds = 0.3f;
+    Harness h(settings);
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
+    CHECK(done.renderSeconds >= 0.3);
+    const uint64_t paths = done.paths;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) h.frame();
+    CHECK(h.viewer.shownSnapshot()->paths == paths);
+}
+
+TEST_CASE("a slow step reaches the display band by band, before the step is complete") {
+    // The furnace at depth 16 and full panel resolution on one thread: the first step (one path
+    // for each of 480x720 pixels, 17 rays each) is rendered in bands, each shown when done.
+    ViewerSettings settings = smallSingleView();
+    settings.single.depth = 16;
+    settings.resolutionScale = 1.0f;
+    Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
+    const auto& partial = h.waitFor([](const WorkerSnapshot& s) {
+        if (s.spp != 0 || s.sides.empty()) return false;
+        const auto& counts = s.sides[0].image.meanAndCount;
+        return counts[3] == 1.0f && counts[counts.size() - 1] == 0.0f;  // top row done, bottom not
+    });
+    const DisplayImage& image = partial.sides[0].image;
+    // Whole rows are done, from the top: every pixel has 0 or 1 samples, done ones above the rest.
+    int lastDoneRow = -1, firstOpenRow = image.height;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float count = image.meanAndCount[4 * (static_cast<size_t>(y) * image.width + x) + 3];
+            REQUIRE((count == 0.0f || count == 1.0f));
+            if (count == 1.0f) lastDoneRow = std::max(lastDoneRow, y);
+            if (count == 0.0f) firstOpenRow = std::min(firstOpenRow, y);
+        }
+    }
+    CHECK(lastDoneRow < firstOpenRow);
+    CHECK(lastDoneRow >= 0);
+}
+
+TEST_CASE("the save buttons write the image as displayed (PNG) and its linear radiance (EXR)") {
+    ViewerSettings settings = smallSingleView();
+    settings.targetSpp = 24;
+    Harness h(settings);
+    const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 24; });
+    const DisplayImage& shown = done.sides.at(0).image;
+    const auto dir = test::scratchDir("viewer-save");
+    h.viewer.panel().setOutputStem((dir / "shot").string());
+    h.click("Files");  // the section starts folded
+    h.click("save PNG");
+    h.click("save EXR");
+    CHECK(h.viewer.panel().message().find("shot.exr") != std::string::npos);
+    // The EXR holds the snapshot's means exactly (32-bit float channels).
+    const Image exr = readExr(dir / "shot.exr");
+    REQUIRE(exr.width == shown.width);
+    REQUIRE(exr.height == shown.height);
+    size_t differing = 0;
+    for (size_t p = 0; p < exr.pixels.size(); ++p) {
+        for (int c = 0; c < 3; ++c) differing += exr.pixels[p][c] != shown.meanAndCount[4 * p + static_cast<size_t>(c)];
+    }
+    CHECK(differing == 0);
+    // The PNG is the render-size image, its size in the IHDR chunk (big-endian, bytes 16..23).
+    std::ifstream png(dir / "shot.png", std::ios::binary);
+    std::vector<unsigned char> header(24);
+    png.read(reinterpret_cast<char*>(header.data()), 24);
+    REQUIRE(png.gcount() == 24);
+    const auto bigEndian = [&](size_t at) {
+        return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3];
+    };
+    CHECK(header[1] == 'P');
+    CHECK(bigEndian(16) == shown.width);
+    CHECK(bigEndian(20) == shown.height);
+}

@@ -1,0 +1,86 @@
+#include <doctest/doctest.h>
+
+#include <fstream>
+
+#include "util/error.h"
+#include "io/image_io.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+Image gradient() {
+    Image image{5, 3, {}};
+    for (int i = 0; i < 15; ++i) image.pixels.emplace_back(i * 0.25f, 1e-3f * i, 1000.0f + i);
+    return image;
+}
+}  // namespace
+
+TEST_CASE("image io: EXR round trip is exact in float") {
+    const auto dir = test::scratchDir("exr");
+    const Image image = gradient();
+    writeImage(dir / "a.exr", image);
+    const Image back = readExr(dir / "a.exr");
+    REQUIRE(back.width == 5);
+    REQUIRE(back.height == 3);
+    CHECK(back.pixels == image.pixels);
+    // Only the file itself is left: no temporary beside it.
+    CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);
+}
+
+TEST_CASE("image io: PFM holds little-endian floats, bottom row first") {
+    const auto dir = test::scratchDir("pfm");
+    writeImage(dir / "a.pfm", gradient());
+    std::ifstream in(dir / "a.pfm", std::ios::binary);
+    std::string magic, scale;
+    int w, h;
+    in >> magic >> w >> h >> scale;
+    in.get();
+    CHECK(magic == "PF");
+    CHECK(scale == "-1.0");
+    float first[3];
+    in.read(reinterpret_cast<char*>(first), sizeof first);
+    CHECK(first[0] == 10 * 0.25f);  // pixel (0, 2): index 10
+}
+
+TEST_CASE("image io: PNG is written, and bad formats and bad files are one-line errors") {
+    const auto dir = test::scratchDir("png");
+    writeImage(dir / "a.png", gradient(), {1.0f, Tonemap::Aces});
+    CHECK(std::filesystem::file_size(dir / "a.png") > 0);
+    CHECK_THROWS_WITH_AS(writeImage(dir / "a.bmp", gradient()), doctest::Contains("unknown image format"), Error);
+    CHECK_THROWS_WITH_AS(writeImage(dir / "missing-dir" / "a.exr", gradient()),
+                         doctest::Contains("cannot write"), Error);
+    std::ofstream(dir / "fake.exr") << "not an exr";
+    CHECK_THROWS_WITH_AS(readExr(dir / "fake.exr"), doctest::Contains("fake.exr: not a readable EXR"), Error);
+    CHECK_THROWS_WITH_AS(readExr(dir / "absent.exr"), doctest::Contains("absent.exr: no such"), Error);
+}
+
+TEST_CASE("image io: a failed write leaves an existing file untouched") {
+    const auto dir = test::scratchDir("atomic");
+    std::ofstream(dir / "keep.png") << "previous contents";
+    Image broken{4, 4, {}};  // no pixels: the encoder reads nothing valid
+    broken.pixels.resize(16);
+    // Make the write fail after the temporary is created: a directory where the target goes.
+    std::filesystem::create_directory(dir / "target.exr");
+    CHECK_THROWS_AS(writeImage(dir / "target.exr", broken), Error);
+    CHECK(std::filesystem::is_directory(dir / "target.exr"));
+    std::ifstream in(dir / "keep.png");
+    std::string contents;
+    std::getline(in, contents);
+    CHECK(contents == "previous contents");
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+    }
+}
+
+TEST_CASE("tonemap: sRGB encoding and curves at known points") {
+    CHECK(encodeSrgb(0.0f) == 0.0f);
+    CHECK(encodeSrgb(1.0f) == doctest::Approx(1.0f));
+    CHECK(encodeSrgb(0.0031308f) == doctest::Approx(0.0404492f));
+    CHECK(toByte(encodeSrgb(0.5f)) == 188);
+    CHECK(applyTonemap(glm::vec3(1.0f), 0.0f, Tonemap::Reinhard).x == doctest::Approx(0.5f));
+    CHECK(applyTonemap(glm::vec3(0.25f), 1.0f, Tonemap::Clamp).x == doctest::Approx(0.5f));
+    CHECK(applyTonemap(glm::vec3(-1.0f), 0.0f, Tonemap::Aces).x == 0.0f);
+    CHECK(parseTonemap("aces") == Tonemap::Aces);
+    CHECK_FALSE(parseTonemap("filmic").has_value());
+}

@@ -1,0 +1,135 @@
+// The Owen-scrambled Sobol' (0,2)-sequence of sobol.h and its use per stratum (strata24-qmc):
+// net properties exactly, uniformity of each scrambled point, and the variance it saves.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "integrator/path_integrator.h"
+#include "sampling/path_samples.h"
+#include "sampling/random.h"
+#include "scene/scene.h"
+#include "sampling/sobol.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+
+// Whether points (in [0,1)^2) form a (0,m,2)-net: for every split m = a + b, each of the 2^m
+// boxes of size 2^-a x 2^-b holds exactly one point.
+bool isNet(const std::vector<glm::dvec2>& points, int m) {
+    if (points.size() != (size_t{1} << m)) return false;
+    for (int a = 0; a <= m; ++a) {
+        std::vector<int> boxes(size_t{1} << m, 0);
+        for (const auto& p : points) {
+            const auto x = static_cast<size_t>(std::floor(p.x * std::ldexp(1.0, a)));
+            const auto y = static_cast<size_t>(std::floor(p.y * std::ldexp(1.0, m - a)));
+            if (++boxes[(x << (m - a)) | y] > 1) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("sobol: every aligned block of 2^m points is a (0,m,2)-net, scrambled or not") {
+    for (int m = 0; m <= 10; ++m) {
+        for (uint32_t block : {0u, 1u, 5u}) {
+            std::vector<glm::dvec2> plain;
+            std::vector<glm::dvec2> scrambled;
+            for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
+                plain.emplace_back(sobolFirstCoordinate(i) * 0x1p-32, sobolSecondCoordinate(i) * 0x1p-32);
+                const glm::vec2 p = scrambledSobolPoint(i, 0x1234567u + block);
+                scrambled.emplace_back(p.x, p.y);
+            }
+            INFO("m " << m << " block " << block);
+            CHECK(isNet(plain, m));
+            CHECK(isNet(scrambled, m));
+        }
+    }
+    // Not every point set is a net: i.i.d. points fail already at m = 4.
+    std::vector<glm::dvec2> random;
+    for (uint64_t i = 0; i < 16; ++i) {
+        const uint64_t bits = mixBits(i);
+        random.emplace_back(uniformFloat(bits), uniformFloat(bits << 24));
+    }
+    CHECK_FALSE(isNet(random, 4));
+}
+
+TEST_CASE("sobol: Owen scrambling keeps leading digits together and is a bijection") {
+    // Values that share their t leading bits still share them after scrambling (nested), and
+    // distinct values stay distinct.
+    for (uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
+        for (uint32_t k = 0; k < 2000; ++k) {
+            const auto a = static_cast<uint32_t>(mixBits(k));
+            const auto b = static_cast<uint32_t>(mixBits(k + 100000));
+            const int shared = a == b ? 32 : __builtin_clz(a ^ b);
+            const uint32_t sa = owenScramble(a, seed);
+            const uint32_t sb = owenScramble(b, seed);
+            CHECK(sa != sb);
+            CHECK((sa == sb ? 32 : __builtin_clz(sa ^ sb)) == shared);
+        }
+    }
+}
+
+TEST_CASE("sobol: each scrambled point is uniform over the streams (chi-square)") {
+    // Owen scrambling makes every single point uniform on [0,1)^2, which is what makes each path
+    // of strata24-qmc unbiased. 16 x 16 cells, points 0, 1 and 77 over 64000 streams.
+    for (uint32_t index : {0u, 1u, 77u}) {
+        constexpr int kBins = 16;
+        constexpr int kStreams = 64000;
+        std::vector<int> counts(kBins * kBins, 0);
+        for (int s = 0; s < kStreams; ++s) {
+            const glm::vec2 p = scrambledSobolPoint(index, hashCombine(99, s));
+            ++counts[static_cast<int>(p.x * kBins) * kBins + static_cast<int>(p.y * kBins)];
+        }
+        const double expected = static_cast<double>(kStreams) / (kBins * kBins);
+        double chi2 = 0.0;
+        for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
+        INFO("index " << index << " chi2 " << chi2);
+        CHECK(chi2 < 360.0);  // 255 degrees of freedom, p ~ 1e-5
+    }
+}
+
+TEST_CASE("sobol: a pixel's passes put a (0,m,2)-net into every stratum (strata24-qmc)") {
+    // The first 2^m passes give each stratum, at each bounce, the points 0..2^m-1 of its stream.
+    constexpr int m = 6;
+    for (int bounce : {0, 1, 4}) {
+        std::vector<std::vector<glm::dvec2>> perStratum(24);
+        for (uint32_t pass = 0; pass < (1u << m); ++pass) {
+            for (int step = 0; step < 24; ++step) {
+                const PathSamples samples(3, 41, pass, step);
+                const glm::vec2 p = samples.stratumSequencePoint(bounce);
+                perStratum[samples.stratum(bounce)].emplace_back(p.x, p.y);
+            }
+        }
+        for (int s = 0; s < 24; ++s) {
+            INFO("bounce " << bounce << " stratum " << s);
+            CHECK(isNet(perStratum[s], m));
+        }
+    }
+}
+
+TEST_CASE("sobol: strata24-qmc has lower variance than strata24 on Lambert's polygon") {
+    // Measured, not a law: printed for the record, and asserted only where the gap is wide.
+    Material receiver;
+    receiver.diffuse = glm::vec3(0.7f);
+    const Scene scene(test::lambertSquareMesh(receiver));
+    const Ray ray = test::rayToOrigin({0.2f, 0.1f, 0.5f});
+    const double exact = 0.7 * test::kLambertSquareIrradiance / M_PI;
+    for (uint32_t passes : {4u, 32u}) {
+        double meanSquaredError[2] = {0.0, 0.0};
+        const SamplerKind kinds[2] = {SamplerKind::Strata24, SamplerKind::Strata24Qmc};
+        for (int k = 0; k < 2; ++k) {
+            const PathIntegrator integrator(scene, {1, kinds[k], false});
+            const auto estimates = test::pixelEstimates(integrator, ray, 300, passes, 17);
+            for (double e : estimates) meanSquaredError[k] += (e - exact) * (e - exact);
+            meanSquaredError[k] /= estimates.size();
+        }
+        const double ratio = meanSquaredError[1] / meanSquaredError[0];
+        std::printf("strata24-qmc / strata24 mean squared error at %u passes: %.3f\n", passes, ratio);
+        CHECK(ratio < 0.8);
+    }
+}
