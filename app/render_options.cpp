@@ -24,8 +24,6 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
     command.add_option("--roulette-depth", rouletteDepth,
                        "Russian roulette from this bounce on, survival by path weight (-1: off)")
         ->capture_default_str();
-    command.add_flag("--general-materials", generalMaterials,
-                     "Run the general material code even when every material is Lambertian");
     command.add_flag("--nee", nee,
                      "Next-event estimation: sample emitting triangles (MIS with the sampler) "
                      "and point lights (reached only this way)");
@@ -55,7 +53,6 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     settings.integrator.nextEventEstimation = nee;
     if (rouletteDepth < -1) throw Error("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
-    settings.integrator.lambertianFastPath = !generalMaterials;
     settings.seed = seed;
     settings.threads = threads;
     return settings;

@@ -25,7 +25,6 @@ struct RenderOptions {
     int threads = 0;
     bool nee = false;
     int rouletteDepth = -1;
-    bool generalMaterials = false;
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);

@@ -204,7 +204,7 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             RenderSettings render;
             render.integrator.depth = depth;
             // Point lights are reached by next-event estimation only: without it such a scene is black.
-            render.integrator.nextEventEstimation = !loaded.scene.mesh().pointLights.empty();
+            render.integrator.nextEventEstimation = loaded.scene.lights().deltaLights() > 0;
             render.seed = settings.seed;
             render.threads = settings.threads;
             const auto reference = findReference(loaded, camera, render.integrator, settings);
@@ -219,13 +219,10 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             runs.insert(runs.end(), group.begin(), group.end());
             if (!settings.skips) continue;
             render.integrator.sampler = SamplerKind::Strata24;
-            RenderSettings generalPath = render;
-            generalPath.integrator.lambertianFastPath = false;
             RenderSettings roulette = render;
             roulette.integrator.rouletteDepth = 2;
             for (auto [variant, variantRender, threshold] :
-                 {std::tuple{"general-materials", generalPath, 0.0},
-                  std::tuple{"roulette-from-2", roulette, 0.0},
+                 {std::tuple{"roulette-from-2", roulette, 0.0},
                   std::tuple{"adaptive-5pct", render, kBenchNoiseThreshold}}) {
                 runs.push_back(runOne(label, loaded, camera, variantRender, *reference, settings,
                                       variant, threshold));
@@ -254,13 +251,10 @@ std::string skipsSummary(const std::vector<ConvergenceRun>& runs) {
                    r.variant.empty() && !r.checkpoints.empty();
         });
         if (plain == runs.end()) continue;
-        // The Lambertian path is on by default: its variant is the run without the skip.
-        const bool variantIsWithout = run.variant == "general-materials";
-        const Checkpoint& with = (variantIsWithout ? plain->checkpoints : run.checkpoints).back();
-        const Checkpoint& without = (variantIsWithout ? run.checkpoints : plain->checkpoints).back();
-        const std::string skip = variantIsWithout ? "Lambertian-only path"
-                                 : run.variant == "roulette-from-2" ? "Russian roulette from bounce 2"
-                                                                    : "adaptive sampling, threshold 5%";
+        const Checkpoint& with = run.checkpoints.back();
+        const Checkpoint& without = plain->checkpoints.back();
+        const std::string skip = run.variant == "roulette-from-2" ? "Russian roulette from bounce 2"
+                                                                  : "adaptive sampling, threshold 5%";
         const bool exactBoth = !(with.mse > 0.0) || !(without.mse > 0.0);
         table.add({run.scene, std::to_string(run.depth), skip, cell("%.4g", with.mse),
                    cell("%.3f", with.cpuSeconds), cell("%.4g", without.mse), cell("%.3f", without.cpuSeconds),

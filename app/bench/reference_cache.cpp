@@ -74,7 +74,7 @@ std::optional<glm::vec3> furnaceRadiance(const Scene& scene, const CameraPose& c
         glm::vec3 direction(0.0f);
         direction[axis % 3] = axis < 3 ? 1.0f : -1.0f;
         const auto hit = scene.intersect(Ray{camera.position, direction});
-        if (!hit || glm::dot(hit->normal, direction) >= 0.0f) return std::nullopt;
+        if (!hit || glm::dot(scene.triangle(hit->triangle).normal, direction) >= 0.0f) return std::nullopt;
     }
     glm::vec3 radiance;
     for (int c = 0; c < 3; ++c) {

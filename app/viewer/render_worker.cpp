@@ -54,7 +54,7 @@ bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
     return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
            a.height != b.height || a.sides != b.sides ||
            a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
-           a.lambertianFastPath != b.lambertianFastPath || a.seed != b.seed ||
+           a.seed != b.seed ||
            a.threads != b.threads || a.preview != b.preview || a.reference != b.reference ||
            a.noiseThreshold != b.noiseThreshold;
 }
@@ -167,7 +167,6 @@ void RenderWorker::run() {
                     settings.integrator.sampler = side.sampler;
                     settings.integrator.nextEventEstimation = config.nextEventEstimation;
                     settings.integrator.rouletteDepth = config.rouletteDepth;
-                    settings.integrator.lambertianFastPath = config.lambertianFastPath;
                     settings.seed = config.seed;
                     settings.threads = config.threads;
                     // Render threads yield to the UI thread (and llvmpipe's) on a small machine.

@@ -39,7 +39,6 @@ struct WorkerConfig {
     std::vector<SideConfig> sides;  // one, or two for the split view
     bool nextEventEstimation = false;
     int rouletteDepth = -1;          // PathIntegratorSettings::rouletteDepth
-    bool lambertianFastPath = true;  // PathIntegratorSettings::lambertianFastPath
     uint64_t seed = 0;
     int threads = 0;
     // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.

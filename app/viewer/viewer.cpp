@@ -98,7 +98,6 @@ void Viewer::frame(const FrameTarget& target) {
     config.sides = settings_.sides();
     config.nextEventEstimation = settings_.nextEventEstimation;
     config.rouletteDepth = settings_.rouletteDepth;
-    config.lambertianFastPath = settings_.lambertianFastPath;
     config.seed = settings_.seed;
     config.threads = settings_.threads;
     config.preview = now - lastMotion_ < kSettleTime;

@@ -23,7 +23,6 @@ struct ViewerSettings {
     float epsilon = 1e-3f;
     bool nextEventEstimation = false;
     int rouletteDepth = -1;  // Russian roulette from this bounce on; -1: off
-    bool lambertianFastPath = true;
     uint64_t seed = 0;
     int threads = 0;
     float resolutionScale = 1.0f;

@@ -16,8 +16,7 @@ constexpr NameTable<SamplerKind, 6> kSamplers{{{{"uniform", SamplerKind::Uniform
 
 // A direction from a hemisphere sampler whose cos / pdf is known in closed form: the weight is
 // f * (cos / pdf) with no pdf division, so a Lambertian weight is exactly Kd * (pi / pi).
-template <class Bsdf>
-SampledDirection hemisphereSample(const Bsdf& bsdf, const glm::vec3& wo,
+SampledDirection hemisphereSample(const LayeredBsdf& bsdf, const glm::vec3& wo,
                                   const glm::vec3& wi, float cosOverPdf, int stratum) {
     const float pdf = wi.z > 0.0f ? wi.z / cosOverPdf : 0.0f;
     return {wi, pdf, bsdf.evaluate(wo, wi) * cosOverPdf, stratum};
@@ -34,9 +33,8 @@ bool stratifies(SamplerKind kind) {
            kind == SamplerKind::Strata24Qmc;
 }
 
-template <class Bsdf>
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
-                                 const Bsdf& bsdf, const glm::vec3& wo) {
+                                 const LayeredBsdf& bsdf, const glm::vec3& wo) {
     switch (kind) {
         case SamplerKind::Uniform: {
             const glm::vec3 d = sampleUniformHemisphere(samples.bouncePoint(bounce));
@@ -71,13 +69,11 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
 }
 
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce) {
-    Material white;
-    white.diffuse = glm::vec3(1.0f);
-    return sampleDirection(kind, samples, bounce, LambertianBsdf(white), glm::vec3(0.0f, 0.0f, 1.0f));
+    const LayeredBsdf white(glm::vec3(1.0f), glm::vec3(0.0f), nullptr);
+    return sampleDirection(kind, samples, bounce, white, glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
-template <class Bsdf>
-float directionPdf(SamplerKind kind, const Bsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi) {
+float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi) {
     if (wi.z <= 0.0f) return 0.0f;
     switch (kind) {
         case SamplerKind::Uniform:
@@ -91,12 +87,5 @@ float directionPdf(SamplerKind kind, const Bsdf& bsdf, const glm::vec3& wo, cons
     }
     return 0.0f;
 }
-
-template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int, const LayeredBsdf&,
-                                          const glm::vec3&);
-template SampledDirection sampleDirection(SamplerKind, const PathSamples&, int,
-                                          const LambertianBsdf&, const glm::vec3&);
-template float directionPdf(SamplerKind, const LayeredBsdf&, const glm::vec3&, const glm::vec3&);
-template float directionPdf(SamplerKind, const LambertianBsdf&, const glm::vec3&, const glm::vec3&);
 
 }  // namespace strata

@@ -23,8 +23,7 @@
 #include <string_view>
 #include <glm/vec3.hpp>
 
-#include "materials/lambertian.h"
-#include "materials/material.h"
+#include "materials/layered_bsdf.h"
 #include "sampling/path_samples.h"
 
 namespace strata {
@@ -48,11 +47,9 @@ struct SampledDirection {
 };
 
 // The direction of bounce `bounce` of the path `samples` at a surface with material `bsdf`,
-// seen from the local direction `wo` (z > 0). Bsdf is LayeredBsdf or, for purely Lambertian
-// scenes, LambertianBsdf (both instantiated in direction_sampler.cpp).
-template <class Bsdf>
+// seen from the local direction `wo` (z > 0).
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
-                                 const Bsdf& bsdf, const glm::vec3& wo);
+                                 const LayeredBsdf& bsdf, const glm::vec3& wo);
 
 // The direction alone, as sampled at a white Lambertian surface seen head-on (where the bsdf
 // sampler is the cosine sampler): for `strata samples` and tests of the partition.
@@ -60,7 +57,6 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
 
 // The marginal density with which sampleDirection would produce the local direction `wi`, the
 // other technique's density in multiple importance sampling with light sampling.
-template <class Bsdf>
-float directionPdf(SamplerKind kind, const Bsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi);
+float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi);
 
 }  // namespace strata

@@ -50,11 +50,27 @@ RTCDevice embreeDevice() {
     return device;
 }
 
-Scene::Scene(MeshData mesh) : mesh_(std::move(mesh)) {
-    if (mesh_.triangles.empty()) throw Error("the scene has no triangles");
-    if (mesh_.triangleMaterials.size() != mesh_.triangles.size()) {
+namespace {
+// The checks the material table and the lights rely on, made before either is built.
+const MeshData& validated(const MeshData& mesh) {
+    if (mesh.triangles.empty()) throw Error("the scene has no triangles");
+    if (mesh.triangleMaterials.size() != mesh.triangles.size()) {
         throw Error("the scene needs one material per triangle");
     }
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        for (uint32_t index : mesh.triangles[i]) {
+            if (index >= mesh.positions.size()) throw Error("a triangle's vertex index is out of range");
+        }
+        if (mesh.triangleMaterials[i] >= mesh.materials.size()) {
+            throw Error("a triangle's material index is out of range");
+        }
+    }
+    return mesh;
+}
+}  // namespace
+
+Scene::Scene(MeshData mesh)
+    : mesh_(std::move(mesh)), materials_(validated(mesh_).materials), lights_(mesh_) {
     boundsMin_ = glm::vec3(std::numeric_limits<float>::infinity());
     boundsMax_ = -boundsMin_;
     for (const auto& p : mesh_.positions) {
@@ -62,25 +78,20 @@ Scene::Scene(MeshData mesh) : mesh_(std::move(mesh)) {
         boundsMax_ = glm::max(boundsMax_, p);
     }
 
-    normals_.reserve(mesh_.triangles.size());
+    triangles_.reserve(mesh_.triangles.size());
     summary_.triangles = mesh_.triangles.size();
     for (size_t i = 0; i < mesh_.triangles.size(); ++i) {
         const auto& tri = mesh_.triangles[i];
-        for (uint32_t index : tri) {
-            if (index >= mesh_.positions.size()) throw Error("a triangle's vertex index is out of range");
-        }
-        if (mesh_.triangleMaterials[i] >= mesh_.materials.size()) {
-            throw Error("a triangle's material index is out of range");
-        }
         const glm::vec3 cross = glm::cross(mesh_.positions[tri[1]] - mesh_.positions[tri[0]],
                                            mesh_.positions[tri[2]] - mesh_.positions[tri[0]]);
-        normals_.push_back(glm::normalize(cross));
+        triangles_.push_back({glm::normalize(cross), mesh_.triangleMaterials[i],
+                              lights_.lightOnTriangle(static_cast<uint32_t>(i))});
         const Material& m = material(static_cast<uint32_t>(i));
         // Kd + Ks bounds a layered material's albedo from above (material.h keeps it <= 1 too),
         // which is what the truncation bound needs.
         summary_.maxAlbedo =
             glm::max(summary_.maxAlbedo, glm::min(1.0f, maxComponent(m.diffuse) + maxComponent(m.specular)));
-        if (maxComponent(m.emission) > 0.0f) {
+        if (triangles_.back().light >= 0) {
             ++summary_.emitters;
             summary_.emittingArea += 0.5 * glm::length(glm::dvec3(cross));
             summary_.maxEmission = glm::max(summary_.maxEmission, maxComponent(m.emission));
@@ -113,7 +124,9 @@ Scene::~Scene() {
 
 Scene::Scene(Scene&& other) noexcept
     : mesh_(std::move(other.mesh_)),
-      normals_(std::move(other.normals_)),
+      triangles_(std::move(other.triangles_)),
+      materials_(std::move(other.materials_)),
+      lights_(std::move(other.lights_)),
       summary_(other.summary_),
       boundsMin_(other.boundsMin_),
       boundsMax_(other.boundsMax_),
@@ -121,7 +134,7 @@ Scene::Scene(Scene&& other) noexcept
     other.rtcScene_ = nullptr;
 }
 
-std::optional<SurfaceHit> Scene::intersect(const Ray& ray) const {
+std::optional<RayHit> Scene::intersect(const Ray& ray) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
@@ -138,14 +151,17 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray) const {
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(rtcScene_, &context, &rayHit);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return RayHit{rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v, rayHit.hit.primID};
+}
 
-    const uint32_t triangle = rayHit.hit.primID;
+SurfaceHit Scene::surface(const RayHit& rayHit) const {
+    const uint32_t triangle = rayHit.triangle;
     const auto& tri = mesh_.triangles[triangle];
     const glm::vec3& p0 = mesh_.positions[tri[0]];
     const glm::vec3& p1 = mesh_.positions[tri[1]];
     const glm::vec3& p2 = mesh_.positions[tri[2]];
-    const float b1 = rayHit.hit.u;
-    const float b2 = rayHit.hit.v;
+    const float b1 = rayHit.u;
+    const float b2 = rayHit.v;
     const float b0 = 1.0f - b1 - b2;
     const glm::vec3 weighted0 = b0 * p0;
     const glm::vec3 weighted1 = b1 * p1;
@@ -163,10 +179,10 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray) const {
     const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
     hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
                      glm::vec3(gammaBound(4) * maxComponent(largest));
-    // Component by component: copied whole, GCC 12 moves normal.z and the triangle index as one
-    // 8-byte word through the stack, a load that store-to-load forwarding cannot serve; the stall
-    // on every ray cost ~6% of the path tracer's time (perf annotate, user time 1.42 -> 1.32 s).
-    const glm::vec3& normal = normals_[triangle];
+    // Component by component: copied whole, GCC 12 moves normal.z and the next field as one
+    // 8-byte word through the stack, a load that store-to-load forwarding cannot serve (a stall
+    // perf annotate showed on every ray, ~6% of the path tracer's time).
+    const glm::vec3& normal = triangles_[triangle].normal;
     hit.normal.x = normal.x;
     hit.normal.y = normal.y;
     hit.normal.z = normal.z;

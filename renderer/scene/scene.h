@@ -1,19 +1,33 @@
 #pragma once
-// A scene ready to trace: the mesh in an Embree 3 BVH plus what shading needs per triangle.
-// Embree traces every ray. The one Embree device of the process is the only global state.
+// A scene ready to trace: the mesh in an Embree 3 BVH, its materials ready to become BSDFs
+// (materials/material_table.h) and its lights (lights/scene_lights.h). Embree traces every ray.
+// The one Embree device of the process is the only global state.
+//
+// A ray's hit is kept as small as Embree gives it (RayHit: t, barycentrics, triangle); the
+// surface record a scattering vertex needs (SurfaceHit: point, error bound, normal) is computed
+// from it only where a path goes on, not at its last bounce nor at a black surface.
 #include <cstdint>
 #include <optional>
 #include <vector>
 #include <embree3/rtcore.h>
 #include <glm/vec3.hpp>
 
-#include "scene/mesh.h"
 #include "geometry/ray.h"
+#include "lights/scene_lights.h"
+#include "materials/material_table.h"
+#include "scene/mesh.h"
 
 namespace strata {
 
 // The process's Embree device, created on first use.
 RTCDevice embreeDevice();
+
+// Embree's answer: where along the (unit) ray, and where on which triangle.
+struct RayHit {
+    float t;
+    float u, v;  // barycentrics of vertices 1 and 2
+    uint32_t triangle;
+};
 
 struct SurfaceHit {
     glm::vec3 point;       // on the triangle, from barycentrics (not origin + t * direction)
@@ -24,7 +38,7 @@ struct SurfaceHit {
 
 struct SceneSummary {
     size_t triangles = 0;
-    size_t emitters = 0;       // emitting triangles
+    size_t emitters = 0;       // emitting triangles (area lights)
     double emittingArea = 0.0;
     float maxAlbedo = 0.0f;    // upper bound on the albedo of the materials in use: max Kd + max Ks
     float maxEmission = 0.0f;  // largest Ke component in use
@@ -40,13 +54,24 @@ public:
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
-    std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    std::optional<RayHit> intersect(const Ray& ray) const;
+    // The surface record at a hit.
+    SurfaceHit surface(const RayHit& hit) const;
     // Whether anything blocks the open segment from origin to origin + direction * distance.
     bool occluded(const Ray& ray, float distance) const;
 
+    // What a bounce reads of the triangle it hit, in one record.
+    struct Triangle {
+        glm::vec3 normal;  // unit geometric normal, counter-clockwise = front
+        uint32_t material;
+        int32_t light;     // index in lights(), -1 when the triangle emits nothing
+    };
+    const Triangle& triangle(uint32_t index) const { return triangles_[index]; }
     const Material& material(uint32_t triangle) const {
         return mesh_.materials[mesh_.triangleMaterials[triangle]];
     }
+    const MaterialTable& materials() const { return materials_; }
+    const SceneLights& lights() const { return lights_; }
     const MeshData& mesh() const { return mesh_; }
     const SceneSummary& summary() const { return summary_; }
     // Bounding box of all vertices.
@@ -57,7 +82,9 @@ public:
 
 private:
     MeshData mesh_;
-    std::vector<glm::vec3> normals_;
+    std::vector<Triangle> triangles_;
+    MaterialTable materials_;
+    SceneLights lights_;
     SceneSummary summary_;
     glm::vec3 boundsMin_{0.0f};
     glm::vec3 boundsMax_{0.0f};

@@ -163,27 +163,3 @@ TEST_CASE("integrator: Russian roulette is unbiased on the furnace and ends path
         CHECK(withRoulette.counters().rays < withoutRoulette.counters().rays / 2);
     }
 }
-
-TEST_CASE("integrator: the Lambertian-only path gives the general path's image") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
-    const Camera camera(loaded.settings.pose, 24, 24);
-    for (SamplerKind sampler : {SamplerKind::Strata24, SamplerKind::Bsdf}) {
-        PathIntegratorSettings fast{4, sampler, true};
-        PathIntegratorSettings general = fast;
-        general.lambertianFastPath = false;
-        CHECK(PathIntegrator(loaded.scene, fast).usesLambertianPath());
-        CHECK_FALSE(PathIntegrator(loaded.scene, general).usesLambertianPath());
-        AccumulationBuffer a(24, 24), b(24, 24);
-        ProgressiveRenderer(loaded.scene, camera, {fast, 8, 0}).renderPass(a, 0);
-        ProgressiveRenderer(loaded.scene, camera, {general, 8, 0}).renderPass(b, 0);
-        // Same samples; the BSDF sampler's weight Kd is computed as (Kd/pi)(cos/(cos/pi)) by the
-        // general path, so its values may differ in the last bits.
-        for (size_t i = 0; i < a.pixelCount(); ++i) {
-            INFO(samplerName(sampler) << " pixel " << i);
-            CHECK(a.mean(i).x == doctest::Approx(b.mean(i).x).epsilon(1e-5));
-        }
-    }
-    // A scene with a specular layer never takes the Lambertian path.
-    const LoadedScene glossy = loadScene(test::sourceDir() / "assets/glossy/glossy.obj");
-    CHECK_FALSE(PathIntegrator(glossy.scene, {2, SamplerKind::Bsdf, true}).usesLambertianPath());
-}

@@ -6,7 +6,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "materials/material.h"
+#include "materials/layered_bsdf.h"
+#include "materials/material_table.h"
 #include "materials/microfacet.h"
 
 using namespace strata;
@@ -105,7 +106,8 @@ TEST_CASE("microfacet: white furnace albedo matches the notes' table (GGX, heigh
                                 {0.46392, 0.48165, 0.56462, 0.67462, 0.82660},
                                 {0.30685, 0.33519, 0.45069, 0.59060, 0.78005}};
     for (int a = 0; a < 5; ++a) {
-        const LayeredBsdf bsdf(specularOnly(alphas[a]));
+        const MaterialTable bsdfMaterials({specularOnly(alphas[a])});
+        const LayeredBsdf bsdf = bsdfMaterials.bsdf(0);
         for (int t = 0; t < 5; ++t) {
             const glm::vec3 wo = directionAt(angles[t]);
             const double albedo = directionalAlbedo(bsdf, bsdf, wo, 256).x;
@@ -130,9 +132,11 @@ TEST_CASE("microfacet: the layered material never reflects more than it receives
             m.diffuse = glm::vec3(1.0f, 0.5f, 0.0f);
             m.specular = glm::vec3(f0);
             m.roughness = roughness;
-            const LayeredBsdf bsdf(m);
+            const MaterialTable bsdfMaterials({m});
+        const LayeredBsdf bsdf = bsdfMaterials.bsdf(0);
             m.diffuse = glm::vec3(0.0f);
-            const LayeredBsdf specular(m);
+            const MaterialTable specularMaterials({m});
+        const LayeredBsdf specular = specularMaterials.bsdf(0);
             for (double theta : {0.0, 45.0, 70.0, 85.0, 89.0}) {
                 const glm::vec3 wo = directionAt(theta);
                 const glm::dvec3 albedo = directionalAlbedo(bsdf, specular, wo, 128);
@@ -152,7 +156,8 @@ TEST_CASE("microfacet: the layered material is reciprocal and Lambertian without
     m.diffuse = glm::vec3(0.6f, 0.3f, 0.2f);
     m.specular = glm::vec3(0.3f);
     m.roughness = 0.4f;
-    const LayeredBsdf layered(m);
+    const MaterialTable layeredMaterials({m});
+        const LayeredBsdf layered = layeredMaterials.bsdf(0);
     const glm::vec3 a = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
     const glm::vec3 b = glm::normalize(glm::vec3(-0.5f, 0.4f, 0.3f));
     const glm::vec3 fab = layered.evaluate(a, b);
@@ -163,10 +168,12 @@ TEST_CASE("microfacet: the layered material is reciprocal and Lambertian without
 
     Material matte;
     matte.diffuse = glm::vec3(0.5f);
-    const LayeredBsdf lambertian(matte);
+    const MaterialTable lambertianMaterials({matte});
+        const LayeredBsdf lambertian = lambertianMaterials.bsdf(0);
     CHECK(lambertian.evaluate(a, b).x == doctest::Approx(0.5 / M_PI));
     CHECK_FALSE(lambertian.hasSpecular());
-    CHECK(LayeredBsdf(Material{}).isBlack());
+    CHECK(MaterialTable({Material{}}).isBlack(0));
+    CHECK(MaterialTable({Material{}}).bsdf(0).isBlack());
 }
 
 TEST_CASE("microfacet: the material's sampler has the density it reports (chi-square)") {
@@ -177,7 +184,8 @@ TEST_CASE("microfacet: the material's sampler has the density it reports (chi-sq
     m.diffuse = glm::vec3(0.3f);
     m.specular = glm::vec3(0.5f);
     m.roughness = 0.6f;
-    const LayeredBsdf bsdf(m);
+    const MaterialTable bsdfMaterials({m});
+        const LayeredBsdf bsdf = bsdfMaterials.bsdf(0);
     const glm::vec3 wo = directionAt(50.0);
     constexpr int kBins = 12;
     constexpr int kFine = 24;

@@ -12,6 +12,7 @@
 #include "integrator/path_integrator.h"
 #include "scene/scene.h"
 #include "sampling/strata24.h"
+#include "materials/material_table.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -135,7 +136,8 @@ TEST_CASE("direction sampler: the reported density is the marginal density of th
     Material m = lambertian(0.5f);
     m.specular = glm::vec3(0.3f);
     m.roughness = 0.6f;
-    const LayeredBsdf bsdf(m);
+    const MaterialTable bsdfMaterials({m});
+        const LayeredBsdf bsdf = bsdfMaterials.bsdf(0);
     const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f));
     for (SamplerKind kind : kAllSamplers) {
         for (int step = 0; step < 24; ++step) {

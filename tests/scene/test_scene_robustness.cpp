@@ -138,8 +138,10 @@ TEST_CASE("scene robustness: rays spawned from a hit never hit the same triangle
         const double extent = glm::length(p1 - p0) + glm::length(p2 - p0);
         const glm::dvec3 origin = target + (0.1 + uniform(rng)) * extent * unitVector();
         const Ray ray{glm::vec3(origin), glm::vec3(glm::normalize(target - origin))};
-        const auto hit = scene.intersect(ray);
-        if (!hit) continue;  // an edge-on or rounding miss: nothing to spawn from
+        const auto rayHit = scene.intersect(ray);
+        if (!rayHit) continue;  // an edge-on or rounding miss: nothing to spawn from
+        const SurfaceHit surface = scene.surface(*rayHit);
+        const SurfaceHit* hit = &surface;
         ++triangles;
         for (int i = 0; i < 8; ++i) {
             // Any direction, either side: half of them graze the surface within 1e-3 of its plane.

@@ -1,4 +1,4 @@
-#include "materials/material.h"
+#include "materials/layered_bsdf.h"
 
 #include <algorithm>
 #include <glm/common.hpp>
@@ -15,25 +15,25 @@ float average(const glm::vec3& v) { return (v.x + v.y + v.z) / 3.0f; }
 
 }  // namespace
 
-LayeredBsdf::LayeredBsdf(const Material& material)
-    : diffuse_(material.diffuse),
-      specular_(material.specular),
-      hasDiffuse_(!isZero(material.diffuse)),
-      hasSpecular_(!isZero(material.specular)),
-      distribution_(ggxAlphaFromRoughness(material.roughness)) {
+LayeredBsdf::LayeredBsdf(const glm::vec3& diffuse, const glm::vec3& specular,
+                         const SpecularLobe* lobe)
+    : diffuse_(diffuse),
+      specular_(specular),
+      hasDiffuse_(!isZero(diffuse)),
+      hasSpecular_(!isZero(specular)),
+      lobe_(lobe) {
     if (hasSpecular_) {
-        albedoTable_.emplace(distribution_);
-        const glm::vec2 average = albedoTable_->averageAlbedo();
+        const glm::vec2 average = lobe_->albedo.averageAlbedo();
         const glm::vec3 averageF = specular_ * average.x + (glm::vec3(1.0f) - specular_) * average.y;
         diffuseNormalisation_ = diffuse_ / (kPi * glm::max(glm::vec3(1.0f) - averageF, 1e-6f));
     } else {
-        diffuseNormalisation_ = diffuse_ * (1.0f / kPi);
+        diffuseNormalisation_ = diffuse_ / kPi;
     }
 }
 
 glm::vec3 LayeredBsdf::specularAlbedo(float mu) const {
     if (!hasSpecular_) return glm::vec3(0.0f);
-    const glm::vec2 e = albedoTable_->albedo(mu);
+    const glm::vec2 e = lobe_->albedo.albedo(mu);
     return specular_ * e.x + (glm::vec3(1.0f) - specular_) * e.y;
 }
 
@@ -51,7 +51,7 @@ glm::vec3 LayeredBsdf::evaluate(const glm::vec3& wo, const glm::vec3& wi) const 
             (glm::vec3(1.0f) - specularAlbedo(wi.z));
     }
     const glm::vec3 h = glm::normalize(wo + wi);
-    return f + schlickFresnel(specular_, glm::dot(wo, h)) * distribution_.reflectance(wo, wi);
+    return f + schlickFresnel(specular_, glm::dot(wo, h)) * lobe_->distribution.reflectance(wo, wi);
 }
 
 float LayeredBsdf::specularProbability(const glm::vec3& wo) const {
@@ -68,14 +68,14 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, glm::vec2 u,
                                               float lobeChoice) const {
     const float pSpecular = specularProbability(wo);
     if (pSpecular == 0.0f) {
-        // Pure Lambertian: cos / pdf is pi exactly, so the weight is Kd with no rounding from a
-        // pdf division (the cosine-sampled furnace then has zero variance, notes section 5.1).
+        // Pure Lambertian: f cos / pdf = (Kd / pi) cos / (cos / pi) is Kd exactly, with no
+        // rounding (the cosine-sampled furnace then has zero variance, notes section 5.1).
         const glm::vec3 wi = sampleCosineHemisphere(u);
-        return BsdfSample{wi, cosineHemispherePdf(wi), diffuseNormalisation_ * kPi};
+        return BsdfSample{wi, cosineHemispherePdf(wi), diffuse_};
     }
     glm::vec3 wi;
     if (lobeChoice < pSpecular) {
-        const glm::vec3 h = distribution_.sampleVisibleNormal(wo, u);
+        const glm::vec3 h = lobe_->distribution.sampleVisibleNormal(wo, u);
         wi = 2.0f * glm::dot(wo, h) * h - wo;
         if (wi.z <= 0.0f) return std::nullopt;
         wi = glm::normalize(wi);
@@ -91,7 +91,7 @@ float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     const float pSpecular = specularProbability(wo);
     float density = (1.0f - pSpecular) * cosineHemispherePdf(wi);
-    if (pSpecular > 0.0f) density += pSpecular * distribution_.reflectionPdf(wo, wi);
+    if (pSpecular > 0.0f) density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
     return density;
 }
 

@@ -1,0 +1,50 @@
+#pragma once
+// What next-event estimation and multiple importance sampling need from a light, whatever its
+// kind: a direction sampled toward it with its density, the density of a given direction, the
+// radiance a ray receives from it (a ray that found it, or one that left the scene) and its total
+// power, by which LightSampler (light_sampler.h) chooses among the scene's lights.
+//
+// Densities are per unit solid angle at the receiving point and do not include the probability of
+// choosing the light. A delta light (a point light) is reached by sampling only: its pdf is 0 and
+// its sample carries the radiance already divided by its (singular) density.
+#include <optional>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace strata {
+
+struct LightSample {
+    glm::vec3 direction;  // unit, from the receiving point toward the light
+    float distance;       // to the sampled point; infinity for a light at infinity
+    glm::vec3 radiance;   // arriving along -direction (for a delta light: intensity / distance^2)
+    float pdf;            // solid-angle density of `direction`; 0 for a delta light
+    bool onSurface;       // the point lies on scene geometry, which a shadow ray must stop short of
+};
+
+// Where a ray reached a light: for a light on the scene's triangles, the triangle's unit
+// geometric normal and the distance along the (unit) ray; a ray that left the scene has distance
+// infinity and no normal.
+struct LightHit {
+    glm::vec3 normal{0.0f};
+    float distance = 0.0f;
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+
+    // A direction toward the light from `point`, `u` uniform in [0,1)^2; nullopt when the sample
+    // carries nothing to `point` (it faces away, say).
+    virtual std::optional<LightSample> sample(const glm::vec3& point, glm::vec2 u) const = 0;
+    // The solid-angle density with which sample() at `point` gives `direction`, which reached the
+    // light at `hit`.
+    virtual float pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const = 0;
+    // Radiance arriving along -direction from the light, reached at `hit`.
+    virtual glm::vec3 emitted(const glm::vec3& direction, const LightHit& hit) const = 0;
+    // Total emitted power (W), per colour channel.
+    virtual glm::vec3 power() const = 0;
+    // Reached only by sampling (no ray can find it).
+    virtual bool isDelta() const { return false; }
+};
+
+}  // namespace strata

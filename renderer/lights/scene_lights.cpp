@@ -1,0 +1,46 @@
+#include "lights/scene_lights.h"
+
+#include "lights/area_light.h"
+#include "lights/point_light.h"
+
+namespace strata {
+namespace {
+
+double meanPower(const Light& light) {
+    const glm::vec3 p = light.power();
+    return (static_cast<double>(p.x) + p.y + p.z) / 3.0;
+}
+
+bool isBlack(const glm::vec3& v) { return !(v.x > 0.0f || v.y > 0.0f || v.z > 0.0f); }
+
+std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
+    std::vector<double> powers;
+    powers.reserve(lights.size());
+    for (const auto& light : lights) powers.push_back(meanPower(*light));
+    return powers;
+}
+
+}  // namespace
+
+SceneLights::SceneLights(const MeshData& mesh)
+    : triangleLight_(mesh.triangles.size(), -1), sampler_({}) {
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const glm::vec3& radiance = mesh.materials[mesh.triangleMaterials[i]].emission;
+        if (isBlack(radiance)) continue;
+        const auto& t = mesh.triangles[i];
+        auto light = std::make_unique<AreaLight>(mesh.positions[t[0]], mesh.positions[t[1]],
+                                                 mesh.positions[t[2]], radiance);
+        if (!(light->area() > 0.0f)) continue;
+        triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
+    }
+    for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
+    sampler_ = LightSampler(powersOf(lights_));
+}
+
+uint32_t SceneLights::add(std::unique_ptr<Light> light) {
+    if (light->isDelta()) ++deltaLights_;
+    lights_.push_back(std::move(light));
+    return static_cast<uint32_t>(lights_.size() - 1);
+}
+
+}  // namespace strata

@@ -1,0 +1,44 @@
+#pragma once
+// Every light of a scene behind the one interface of light.h, and the power-based choice among
+// them (light_sampler.h). The integrator asks it for a light sample at each scattering vertex,
+// for the light a ray found on a triangle, and for what arrives along a ray that left the scene;
+// it knows no light by its kind. A new kind of light is a file in this folder and one line in
+// SceneLights' constructor.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "lights/light.h"
+#include "lights/light_sampler.h"
+#include "scene/mesh.h"
+
+namespace strata {
+
+class SceneLights {
+public:
+    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights.
+    explicit SceneLights(const MeshData& mesh);
+
+    size_t size() const { return lights_.size(); }
+    const Light& light(uint32_t index) const { return *lights_[index]; }
+    const LightSampler& sampler() const { return sampler_; }
+
+    // The light on `triangle`, or -1 when it emits nothing.
+    int32_t lightOnTriangle(uint32_t triangle) const { return triangleLight_[triangle]; }
+    // The lights a ray that leaves the scene receives radiance from (none until the scene has an
+    // environment).
+    const std::vector<uint32_t>& lightsAtInfinity() const { return atInfinity_; }
+    // The delta lights (point lights), which next-event estimation alone reaches.
+    size_t deltaLights() const { return deltaLights_; }
+
+private:
+    uint32_t add(std::unique_ptr<Light> light);
+
+    std::vector<std::unique_ptr<Light>> lights_;
+    std::vector<int32_t> triangleLight_;
+    std::vector<uint32_t> atInfinity_;
+    size_t deltaLights_ = 0;
+    LightSampler sampler_;
+};
+
+}  // namespace strata

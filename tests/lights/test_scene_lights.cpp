@@ -1,0 +1,51 @@
+// A scene's lights (scene_lights.h): emitting triangles become area lights found by their
+// triangle, point lights are added after them, and the choice among all of them is by power.
+#include <doctest/doctest.h>
+
+#include "lights/scene_lights.h"
+#include "util/constants.h"
+#include "test_support.h"
+
+using namespace strata;
+
+TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") {
+    MeshData mesh;
+    Material dark;
+    dark.diffuse = glm::vec3(0.5f);
+    Material bright;
+    bright.emission = glm::vec3(3.0f);
+    Material blue;
+    blue.emission = glm::vec3(0.0f, 0.0f, 3.0f);  // mean radiance 1
+    mesh.materials = {dark, bright, blue};
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // area 1, not emitting
+    test::addQuad(mesh, {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, 1);  // area 2, power 6 pi
+    test::addQuad(mesh, {0, 0, 2}, {0, 1, 2}, {2, 1, 2}, {2, 0, 2}, 2);  // area 2, power 2 pi
+    mesh.pointLights = {PointLight({0, 0, 5}, glm::vec3(0.5f))};    // power 2 pi
+    const SceneLights lights(mesh);
+    REQUIRE(lights.size() == 5);
+    CHECK(lights.deltaLights() == 1);
+    CHECK(lights.lightOnTriangle(0) == -1);
+    CHECK(lights.lightOnTriangle(1) == -1);
+    REQUIRE(lights.lightOnTriangle(2) >= 0);
+    CHECK(lights.light(static_cast<uint32_t>(lights.lightOnTriangle(2))).power().x ==
+          doctest::Approx(3.0f * kPi));
+    CHECK(lights.lightsAtInfinity().empty());
+    // Total mean power 10 pi: each bright triangle 3/10, each blue one 1/10, the point light 2/10.
+    CHECK(lights.sampler().probability(static_cast<uint32_t>(lights.lightOnTriangle(2))) ==
+          doctest::Approx(0.3f));
+    CHECK(lights.sampler().probability(static_cast<uint32_t>(lights.lightOnTriangle(4))) ==
+          doctest::Approx(0.1f));
+    CHECK(lights.sampler().probability(4) == doctest::Approx(0.2f));
+    CHECK(lights.light(4).isDelta());
+}
+
+TEST_CASE("scene lights: a scene without emitters has none") {
+    Material dark;
+    dark.diffuse = glm::vec3(0.5f);
+    MeshData mesh;
+    mesh.materials = {dark};
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
+    const SceneLights lights(mesh);
+    CHECK(lights.size() == 0);
+    CHECK(lights.sampler().empty());
+}
