@@ -42,9 +42,7 @@ glm::vec3 LayeredBsdf::tabulatedAlbedo(const glm::vec3& wo) const {
     return e + diffuse_ * (glm::vec3(1.0f) - e);
 }
 
-glm::vec3 LayeredBsdf::evaluate(const glm::vec3& wo, const glm::vec3& wi) const {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
-    if (!hasSpecular_) return diffuseNormalisation_;
+glm::vec3 LayeredBsdf::evaluateLayered(const glm::vec3& wo, const glm::vec3& wi) const {
     glm::vec3 f(0.0f);
     if (hasDiffuse_) {
         f = diffuseNormalisation_ * (glm::vec3(1.0f) - specularAlbedo(wo.z)) *

@@ -46,7 +46,11 @@ public:
     bool hasSpecular() const { return hasSpecular_; }
 
     // f_r(wo, wi); 0 when wi is below the surface.
-    glm::vec3 evaluate(const glm::vec3& wo, const glm::vec3& wi) const;
+    // Inline for the Lambertian case, which every hemisphere sampler's weight calls.
+    glm::vec3 evaluate(const glm::vec3& wo, const glm::vec3& wi) const {
+        if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+        return hasSpecular_ ? evaluateLayered(wo, wi) : diffuseNormalisation_;
+    }
     // Importance sampling of f_r cos: a lobe is chosen with `lobeChoice` in [0,1) (by the lobes'
     // albedos at wo), then the diffuse lobe is sampled by cosine, the specular one by GGX visible
     // normals. Empty when the sampled direction falls below the surface (the sample counts, with
@@ -63,6 +67,7 @@ public:
 
 private:
     glm::vec3 specularAlbedo(float mu) const;  // E_F(mu), per channel
+    glm::vec3 evaluateLayered(const glm::vec3& wo, const glm::vec3& wi) const;  // both lobes
 
     glm::vec3 diffuse_;
     glm::vec3 specular_;  // F0 of Schlick's Fresnel

@@ -18,7 +18,7 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
             }
             if (!lobe) lobe = lobes_.emplace_back(std::make_unique<SpecularLobe>(alpha)).get();
         }
-        entries_.push_back({m.diffuse, m.specular, lobe, isZero(m.diffuse) && isZero(m.specular)});
+        entries_.push_back({LayeredBsdf(m.diffuse, m.specular, lobe), isZero(m.diffuse) && isZero(m.specular)});
     }
 }
 

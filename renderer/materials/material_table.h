@@ -17,11 +17,9 @@ class MaterialTable {
 public:
     explicit MaterialTable(const std::vector<Material>& materials);
 
-    // The BSDF of `material` at a hit.
-    LayeredBsdf bsdf(uint32_t material) const {
-        const Entry& e = entries_[material];
-        return LayeredBsdf(e.diffuse, e.specular, e.lobe);
-    }
+    // The BSDF of `material` at a hit. A material whose parameters are constant over its
+    // surface keeps its BSDF made once, and a hit takes a copy: a few dozen bytes.
+    LayeredBsdf bsdf(uint32_t material) const { return entries_[material].bsdf; }
     // Whether the material reflects nothing, so a path that reaches it ends there.
     bool isBlack(uint32_t material) const { return entries_[material].black; }
     size_t size() const { return entries_.size(); }
@@ -30,9 +28,7 @@ public:
 
 private:
     struct Entry {
-        glm::vec3 diffuse;
-        glm::vec3 specular;
-        const SpecularLobe* lobe;  // null without a specular layer
+        LayeredBsdf bsdf;
         bool black;
     };
     std::vector<Entry> entries_;

@@ -172,10 +172,10 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     // test works relative to the ray origin in sheared coordinates that mix all three axes, so
     // a ray leaving a plane such as x = 0 can find that plane again at t ~ 0 unless the origin
     // clears it by a few ulp of the triangle's largest coordinate (translating the vertices by the
-    // origin and shearing them each round once per axis: about 3 u). gamma(4) covers that; it was
-    // gamma(16), which at 1e6 from the origin pushed new rays about 1 unit off the surface, out
-    // through the wall of a unit furnace (tests/scene/test_scene_robustness.cpp: no re-hit in 320k
-    // spawned rays even with gamma(1), 122 in 20k with no such term).
+    // origin and shearing them each round once per axis: about 3 u). gamma(4) covers that, and
+    // no more: a much larger bound, gamma(16), at 1e6 from the origin pushes new rays about 1 unit
+    // off the surface, out through the wall of a unit furnace (tests/scene/test_scene_robustness.cpp:
+    // no re-hit in 320k spawned rays even with gamma(1), 122 in 20k with no such term).
     const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
     hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
                      glm::vec3(gammaBound(4) * maxComponent(largest));
