@@ -67,8 +67,9 @@ void broadcast(std::vector<SceneFile>& files) {
 void broadcast(std::optional<SceneFile>& file) {
     uint8_t present = file ? 1 : 0;
     MPI_Bcast(&present, 1, MPI_UINT8_T, 0, MPI_COMM_WORLD);
-    if (present && !file) file.emplace();
-    if (present) broadcast(*file);
+    if (!present) return;
+    if (!file) file.emplace();
+    broadcast(*file);
 }
 
 // Adds every rank's `data` into rank 0's, element-wise.

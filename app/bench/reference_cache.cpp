@@ -32,8 +32,8 @@ public:
         addText(file.name);
         addText(file.bytes);
     }
-    // Whether the file is there, then the file: a description and a camera file of the same bytes
-    // key differently.
+    // Whether the file is there, then the file, so that the same bytes as the description or as
+    // the camera file key differently.
     void addFile(const std::optional<SceneFile>& file) {
         const uint8_t present = file ? 1 : 0;
         addValue(present);
