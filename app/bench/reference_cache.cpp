@@ -94,11 +94,11 @@ uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
     Fnv1a hash;
     constexpr uint32_t kKeyVersion = 1;  // bump when the renderer's output changes meaning
     hash.addValue(kKeyVersion);
-    const uint64_t files = loaded.files.files.size();
+    const uint64_t files = loaded.bundle.files.size();
     hash.addValue(files);
-    for (const SceneFile& file : loaded.files.files) hash.addFile(file);
-    hash.addFile(loaded.files.description);
-    hash.addFile(loaded.files.camera);
+    for (const SceneFile& file : loaded.bundle.files) hash.addFile(file);
+    hash.addFile(loaded.bundle.description);
+    hash.addFile(loaded.bundle.camera);
     const CameraPose& pose = camera.pose();
     for (const glm::vec3& v : {pose.position, pose.lookAt, pose.up}) {
         hash.addValue(v.x);

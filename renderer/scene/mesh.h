@@ -1,5 +1,6 @@
 #pragma once
-// Geometry and materials as plain data: what the OBJ loader produces and what tests build by hand.
+// Geometry and materials as plain data: what a scene format's loader produces (scene_format.h) and
+// what tests build by hand.
 #include <array>
 #include <cstdint>
 #include <string>

@@ -113,7 +113,7 @@ void readLight(const json& entry, const std::string& path, SceneDescription& des
     throw Error(path + ": unknown light type '" + type->get<std::string>() + "' " + knownTypes());
 }
 
-// An array of objects under `key`, each given to `read`.
+// The array under `key`, when there is one, entry by entry.
 template <typename Read>
 void forEachEntry(const json& root, const char* key, const std::string& path, Read read) {
     const auto entries = root.find(key);

@@ -56,30 +56,31 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle files) {
+LoadedScene parseScene(SceneBundle bundle) {
     LoadReport report;
-    MeshData mesh = parseSceneMesh(files, &report);
+    MeshData mesh = parseSceneMesh(bundle, &report);
     if (mesh.triangles.empty()) {
-        throw Error(files.path.string() + ": the scene has no usable triangles");
+        throw Error(bundle.path.string() + ": the scene has no usable triangles");
     }
     SceneDescription description;
-    if (files.description) {
-        description = parseSceneDescription(files.description->bytes,
-                                            files.pathOf(files.description->name));
+    if (bundle.description) {
+        description = parseSceneDescription(bundle.description->bytes,
+                                            bundle.pathOf(bundle.description->name));
     }
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
-    if (files.camera) {
-        const SceneDescription camera = parseCameraFile(files.camera->bytes, files.camera->name);
-        description.camera = camera.camera;
-        description.hasPose = true;
-        mesh.pointLights.insert(mesh.pointLights.end(), camera.pointLights.begin(),
-                                camera.pointLights.end());
+    CameraSettings settings = description.camera;
+    bool posed = description.hasPose;
+    if (bundle.camera) {
+        const SceneDescription cameraFile = parseCameraFile(bundle.camera->bytes, bundle.camera->name);
+        settings = cameraFile.camera;
+        posed = true;
+        mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
+                                cameraFile.pointLights.end());
     }
     Scene scene(std::move(mesh));
-    CameraSettings settings = description.camera;
-    if (!description.hasPose) settings.pose = framingPose(scene);
-    return LoadedScene{std::move(scene), settings, report, std::move(files)};
+    if (!posed) settings.pose = framingPose(scene);
+    return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
 }
 
 LoadedScene loadScene(const std::filesystem::path& path,

@@ -15,9 +15,9 @@ struct LoadedScene {
     Scene scene;
     CameraSettings settings;
     LoadReport report;
-    SceneBundle files;  // what it was parsed from
+    SceneBundle bundle;  // the files it was parsed from
 
-    const std::filesystem::path& scenePath() const { return files.path; }
+    const std::filesystem::path& scenePath() const { return bundle.path; }
 };
 
 // Reads the scene's files: the scene file `path` and those it refers to, the scene description
@@ -32,7 +32,7 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else framing the scene.
 // Throws strata::Error naming the bad file.
-LoadedScene parseScene(SceneBundle files);
+LoadedScene parseScene(SceneBundle bundle);
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,

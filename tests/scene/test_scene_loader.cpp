@@ -76,7 +76,7 @@ TEST_CASE("scene loader: the lights are the scene description's, with or without
 
     // --camera naming the description itself counts its lights once.
     const LoadedScene same = loadScene(dir / "s.obj", dir / "s.json");
-    CHECK_FALSE(same.files.camera);
+    CHECK_FALSE(same.bundle.camera);
     CHECK(same.scene.mesh().pointLights.size() == 2);
     CHECK(same.settings.pose.position == own.settings.pose.position);
 }
@@ -106,7 +106,7 @@ TEST_CASE("scene loader: every bundled and shared scene loads, with the point li
     for (const char* scene : {"assets/cornell/cornell.obj", "assets/furnace/furnace.obj", "assets/glossy/glossy.obj"}) {
         CAPTURE(scene);
         const LoadedScene loaded = loadScene(test::sourceDir() / scene);
-        CHECK(loaded.files.description);
+        CHECK(loaded.bundle.description);
         CHECK(loaded.scene.summary().triangles > 0);
     }
     size_t scenes = 0;
@@ -114,7 +114,7 @@ TEST_CASE("scene loader: every bundled and shared scene loads, with the point li
         const auto obj = entry.path() / "scene.obj";
         if (!std::filesystem::is_regular_file(obj)) continue;
         CAPTURE(obj);
-        CHECK(loadScene(obj).files.description);
+        CHECK(loadScene(obj).bundle.description);
         ++scenes;
     }
     CHECK(scenes >= 4);
