@@ -52,8 +52,8 @@ void RenderCommand::run() const {
     // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
     RenderJob job;
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
-    const SceneFiles files = job.shareSceneFiles([&] { return render.readSceneFiles(); });
-    const LoadedScene loaded = job.collectively([&] { return parseScene(files); });
+    SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
+    const LoadedScene loaded = job.collectively([&] { return parseScene(std::move(files)); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
@@ -137,7 +137,7 @@ void RenderCommand::run() const {
     const glm::dvec3 mean = buffer.imageMean();
     if (json) {
         nlohmann::json report{
-            {"scene", loaded.objPath.string()},
+            {"scene", loaded.scenePath().string()},
             {"width", camera.width()},
             {"height", camera.height()},
             {"sampler", samplerName(settings.integrator.sampler)},

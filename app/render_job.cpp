@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <span>
+#include <vector>
 
 #include "util/error.h"
 
@@ -48,6 +50,26 @@ void broadcast(std::filesystem::path& path) {
     std::string text = path.string();
     broadcast(text);
     path = text;
+}
+
+void broadcast(SceneFile& file) {
+    broadcast(file.name);
+    broadcast(file.bytes);
+}
+
+void broadcast(std::vector<SceneFile>& files) {
+    uint64_t count = files.size();
+    MPI_Bcast(&count, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    files.resize(count);
+    for (SceneFile& file : files) broadcast(file);
+}
+
+void broadcast(std::optional<SceneFile>& file) {
+    uint8_t present = file ? 1 : 0;
+    MPI_Bcast(&present, 1, MPI_UINT8_T, 0, MPI_COMM_WORLD);
+    if (!present) return;
+    if (!file) file.emplace();
+    broadcast(*file);
 }
 
 // Adds every rank's `data` into rank 0's, element-wise.
@@ -147,21 +169,19 @@ void RenderJob::settle(std::exception_ptr failure) {
 #endif
 }
 
-SceneFiles RenderJob::shareSceneFiles(const std::function<SceneFiles()>& read) {
+SceneBundle RenderJob::shareSceneBundle(const std::function<SceneBundle()>& read) {
     if (!mpi_) return read();
-    SceneFiles files;
+    SceneBundle bundle;
 #if STRATA_WITH_MPI
     collectively([&] {
-        if (isRoot()) files = read();
+        if (isRoot()) bundle = read();
     });
-    for (std::string* text : {&files.obj.objText, &files.obj.objName, &files.obj.mtlText,
-                              &files.obj.mtlName, &files.cameraText}) {
-        broadcast(*text);
-    }
-    broadcast(files.objPath);
-    broadcast(files.cameraPath);
+    broadcast(bundle.path);
+    broadcast(bundle.files);
+    broadcast(bundle.description);
+    broadcast(bundle.camera);
 #endif
-    return files;
+    return bundle;
 }
 
 // Bit-identity with the single-process image is not arranged, and cannot be without shipping

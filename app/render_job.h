@@ -43,9 +43,9 @@ public:
     template <typename Step>
     auto collectively(Step&& step) -> std::invoke_result_t<Step&>;
 
-    // Rank 0 reads the scene's files with `read`; every rank gets their bytes (MPI_Bcast) and so
-    // parses the very same scene, even when the hosts' file systems differ.
-    SceneFiles shareSceneFiles(const std::function<SceneFiles()>& read);
+    // Rank 0 reads the scene's files with `read`; every rank gets their names and bytes
+    // (MPI_Bcast) and so parses the very same scene, even when the hosts' file systems differ.
+    SceneBundle shareSceneBundle(const std::function<SceneBundle()>& read);
 
     // Adds every rank's buffer and counters into rank 0's (MPI_Reduce); the other ranks' are then
     // meaningless. Ranks must have rendered disjoint passes (passesOfRank).

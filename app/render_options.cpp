@@ -8,9 +8,10 @@
 namespace strata {
 
 void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
-    auto* sceneOption = command.add_option("scene", scene, "Scene .obj (camera from NAME.json beside it)");
+    auto* sceneOption = command.add_option(
+        "scene", scene, "Scene file (" + knownSceneExtensions() + "; camera and lights from NAME.json beside it)");
     if (sceneRequired) sceneOption->required();
-    command.add_option("--camera", cameraFile, "Camera JSON (default: NAME.json beside the scene)");
+    command.add_option("--camera", cameraFile, "Camera JSON (default: NAME.json beside the scene; lights stay the scene's)");
     command.add_option("--width", width, "Image width (default: from the camera file)");
     command.add_option("--height", height, "Image height (default: from the camera file)");
     command.add_option("--depth", depth, "Recursion depth K: bounces per path (0 = emission only)")
@@ -58,13 +59,13 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     return settings;
 }
 
-SceneFiles RenderOptions::readSceneFiles() const {
+SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneFiles(scene, cameraPath);
+    return strata::readSceneBundle(scene, cameraPath);
 }
 
-LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneFiles()); }
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
     if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");

@@ -31,9 +31,10 @@ struct RenderOptions {
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const LoadedScene& loaded) const;
-    // Reads the scene's files (OBJ, MTL, camera JSON) without parsing them.
-    SceneFiles readSceneFiles() const;
-    // Loads the scene and camera: parseScene(readSceneFiles()).
+    // Reads the scene's files (the scene file and those it names, its description, the camera
+    // file) without parsing them.
+    SceneBundle readSceneBundle() const;
+    // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;
     // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;

@@ -118,7 +118,7 @@ void ViewCommand::run() const {
     }
     const double renderSeconds = last ? last->totalRenderSeconds : 0.0;
     const nlohmann::json out{
-        {"scene", scene->objPath.string()},
+        {"scene", scene->scenePath().string()},
         {"context", report.context},
         {"width", run.width},
         {"height", run.height},

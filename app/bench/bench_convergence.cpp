@@ -43,7 +43,7 @@ Image renderReference(const LoadedScene& loaded, const Camera& camera,
     render.threads = settings.threads;
     AccumulationBuffer buffer(camera.width(), camera.height());
     ProgressiveRenderer renderer(loaded.scene, camera, render);
-    ProgressReporter progress("reference " + sceneName(loaded.objPath), settings.referencePasses,
+    ProgressReporter progress("reference " + sceneName(loaded.scenePath()), settings.referencePasses,
                               kPathsPerPass);
     for (uint32_t pass = 0; pass < settings.referencePasses; ++pass) {
         renderer.renderPass(buffer, pass);
@@ -73,7 +73,7 @@ std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& 
     if (std::filesystem::is_regular_file(path)) return Reference{std::nullopt, readExr(path), "cache"};
     if (!settings.makeReference) {
         std::fprintf(stderr, "note: no reference %s for %s; run with --make-reference (skipped)\n",
-                     path.string().c_str(), loaded.objPath.string().c_str());
+                     path.string().c_str(), loaded.scenePath().string().c_str());
         return std::nullopt;
     }
     std::filesystem::create_directories(path.parent_path());
@@ -94,7 +94,7 @@ ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const
                       const ConvergenceSettings& settings, const std::string& variant = "",
                       double noiseThreshold = 0.0) {
     ConvergenceRun run{label,
-                       loaded.objPath.string(),
+                       loaded.scenePath().string(),
                        std::string(samplerName(render.integrator.sampler)),
                        variant,
                        render.integrator.depth,
@@ -194,7 +194,7 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
     std::map<std::string, int> uses;  // two scenes may share a name (assets/cornell, shared cornell)
     for (const auto& scenePath : settings.scenes) {
         const LoadedScene loaded = loadScene(scenePath);
-        std::string label = sceneName(loaded.objPath);
+        std::string label = sceneName(loaded.scenePath());
         if (const int n = ++uses[label]; n > 1) label.append("-").append(std::to_string(n));
         std::fprintf(stderr, "bench scene %s: %s\n", label.c_str(), scenePath.string().c_str());
         const int height = std::max(1, static_cast<int>(std::lround(

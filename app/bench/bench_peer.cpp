@@ -8,7 +8,7 @@
 
 #include "bench/bench_output.h"
 #include "bench/bench_process.h"
-#include "scene/camera.h"
+#include "scene/scene_loader.h"
 #include "util/error.h"
 #include "io/image_io.h"
 #include "progress.h"
@@ -60,7 +60,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         return "\n### Against Embree's tutorial path tracer\n\nSkipped: " + settings.scene.string() +
                " (or its JSON sidecar) is missing.\n";
     }
-    const SceneSettings scene = loadSceneSettings(sidecar);
+    const LoadedScene scene = loadScene(settings.scene);
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
     const auto strataImage = settings.outDir / "peer-strata.exr";
     const auto embreeImage = settings.outDir / "peer-embree.ppm";
@@ -72,7 +72,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         "--depth", std::to_string(settings.depth), "--spp", std::to_string(settings.spp),
         "--width", std::to_string(settings.width), "--height", std::to_string(settings.height),
         "--threads", std::to_string(threads), "--out", strataImage.string()};
-    const CameraPose& pose = scene.pose;
+    const CameraPose& pose = scene.settings.pose;
     std::vector<std::string> embreeArgs = {
         kEmbreePathTracer, "-i", settings.scene.string(),
         "--vp", number(pose.position.x), number(pose.position.y), number(pose.position.z),
@@ -83,7 +83,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         "--spp", std::to_string(settings.spp),
         "--max-path-length", std::to_string(settings.depth + 1),
         "--threads", std::to_string(threads), "-o", embreeImage.string()};
-    for (const PointLight& light : scene.pointLights) {
+    for (const PointLight& light : scene.scene.mesh().pointLights) {
         embreeArgs.insert(embreeArgs.end(),
                           {"--pointlight", number(light.position.x), number(light.position.y),
                            number(light.position.z), number(light.intensity.x),

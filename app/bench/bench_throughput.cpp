@@ -175,7 +175,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
     const int maxThreads = settings.threads > 0 ? settings.threads
                                                 : tbb::info::default_concurrency();
     const LoadedScene loaded = loadScene(settings.scene);
-    const std::string name = sceneName(loaded.objPath);
+    const std::string name = sceneName(loaded.scenePath());
     const bool nee = !loaded.scene.mesh().pointLights.empty();
     const Camera camera = cameraOfWidth(loaded, quick ? 96 : 256);
     const uint32_t passes = quick ? 2 : 6;

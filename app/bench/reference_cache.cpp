@@ -1,17 +1,13 @@
 #include "bench/reference_cache.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <map>
+#include <optional>
+#include <string>
 #include <utility>
-#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
-
-#include "util/error.h"
 
 namespace strata {
 namespace {
@@ -27,13 +23,21 @@ public:
     }
     template <typename T>
     void addValue(const T& value) { add(&value, sizeof value); }
-    void addFile(const std::filesystem::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) throw Error(path.string() + ": cannot read it to key the reference");
-        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-        const uint64_t size = bytes.size();
-        addValue(size);  // separates one file's bytes from the next
-        add(bytes.data(), bytes.size());
+    void addText(const std::string& text) {
+        const uint64_t size = text.size();
+        addValue(size);  // separates one text from the next
+        add(text.data(), text.size());
+    }
+    void addFile(const SceneFile& file) {
+        addText(file.name);
+        addText(file.bytes);
+    }
+    // Whether the file is there, then the file, so that the same bytes as the description or as
+    // the camera file key differently.
+    void addFile(const std::optional<SceneFile>& file) {
+        const uint8_t present = file ? 1 : 0;
+        addValue(present);
+        if (file) addFile(*file);
     }
     uint64_t value() const { return hash_; }
 
@@ -90,16 +94,11 @@ uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
     Fnv1a hash;
     constexpr uint32_t kKeyVersion = 1;  // bump when the renderer's output changes meaning
     hash.addValue(kKeyVersion);
-    hash.addFile(loaded.objPath);
-    std::vector<std::filesystem::path> materials;
-    const auto folder = loaded.objPath.has_parent_path() ? loaded.objPath.parent_path()
-                                                         : std::filesystem::path(".");
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-        if (entry.path().extension() == ".mtl") materials.push_back(entry.path());
-    }
-    std::sort(materials.begin(), materials.end());
-    for (const auto& m : materials) hash.addFile(m);
-    if (!loaded.cameraPath.empty()) hash.addFile(loaded.cameraPath);
+    const uint64_t files = loaded.bundle.files.size();
+    hash.addValue(files);
+    for (const SceneFile& file : loaded.bundle.files) hash.addFile(file);
+    hash.addFile(loaded.bundle.description);
+    hash.addFile(loaded.bundle.camera);
     const CameraPose& pose = camera.pose();
     for (const glm::vec3& v : {pose.position, pose.lookAt, pose.up}) {
         hash.addValue(v.x);
@@ -115,10 +114,10 @@ uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
     return hash.value();
 }
 
-std::string sceneName(const std::filesystem::path& objPath) {
-    const std::string stem = objPath.stem().string();
-    if (stem == "scene" && objPath.has_parent_path()) {
-        const std::string folder = objPath.parent_path().filename().string();
+std::string sceneName(const std::filesystem::path& scenePath) {
+    const std::string stem = scenePath.stem().string();
+    if (stem == "scene" && scenePath.has_parent_path()) {
+        const std::string folder = scenePath.parent_path().filename().string();
         if (!folder.empty()) return folder;
     }
     return stem;
@@ -129,7 +128,7 @@ std::filesystem::path referencePath(const std::filesystem::path& dir, const Load
     char key[17];
     std::snprintf(key, sizeof key, "%016llx",
                   static_cast<unsigned long long>(referenceKey(loaded, camera, integrator)));
-    return dir / (sceneName(loaded.objPath) + "-d" + std::to_string(integrator.depth) +
+    return dir / (sceneName(loaded.scenePath()) + "-d" + std::to_string(integrator.depth) +
                   (integrator.nextEventEstimation ? "-nee-" : "-") + key + ".exr");
 }
 

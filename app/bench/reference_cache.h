@@ -24,18 +24,19 @@ namespace strata {
 std::optional<glm::vec3> furnaceRadiance(const Scene& scene, const CameraPose& camera,
                                          const PathIntegratorSettings& integrator);
 
-// 64-bit FNV-1a over the OBJ, every .mtl beside it and the camera file, then the camera pose, the
-// image size, the depth and the next-event flag. The sampler is not part of it: every unbiased
-// sampler converges to the same image.
+// 64-bit FNV-1a over every file the scene was parsed from (each one's name and bytes: the scene
+// file, those it names, the scene description, the camera file), then the camera pose, the image
+// size, the depth and the next-event flag. The sampler is not part of it: every unbiased sampler
+// converges to the same image.
 uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
                       const PathIntegratorSettings& integrator);
 
-// DIR/NAME-dK-KEY.exr, NAME from the scene (its folder's name when the file is scene.obj).
+// DIR/NAME-dK-KEY.exr, NAME from the scene (its folder's name when the file is scene.EXT).
 std::filesystem::path referencePath(const std::filesystem::path& dir, const LoadedScene& loaded,
                                     const Camera& camera, const PathIntegratorSettings& integrator);
 
-// A short name for a scene in tables and file names: the OBJ's stem, or its folder's name when
-// the stem is the generic "scene".
-std::string sceneName(const std::filesystem::path& objPath);
+// A short name for a scene in tables and file names: the scene file's stem, or its folder's name
+// when the stem is the generic "scene".
+std::string sceneName(const std::filesystem::path& scenePath);
 
 }  // namespace strata

@@ -1,6 +1,6 @@
 #pragma once
 // The windowed context: a GLFW window with an OpenGL 3.3 core context, Dear ImGui's GLFW platform
-// backend, and the drop callback that backend does not install (dropped .obj files open scenes).
+// backend, and the drop callback that backend does not install (dropped scene files open scenes).
 #include <string>
 #include <vector>
 

@@ -32,16 +32,16 @@ Viewer::Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& s
       reference_(std::move(reference)),
       settings_(settings),
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
-    panel_.setScenePath(scene_->objPath.string());
+    panel_.setScenePath(scene_->scenePath().string());
 }
 
-void Viewer::openScene(const std::filesystem::path& objPath) {
+void Viewer::openScene(const std::filesystem::path& path) {
     try {
-        auto loaded = std::make_shared<const LoadedScene>(loadScene(objPath));
+        auto loaded = std::make_shared<const LoadedScene>(loadScene(path));
         scene_ = std::move(loaded);
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
-        panel_.setScenePath(objPath.string());
-        panel_.setMessage("opened " + objPath.string());
+        panel_.setScenePath(path.string());
+        panel_.setMessage("opened " + path.string());
     } catch (const std::exception& e) {
         panel_.setMessage(std::string("cannot open scene: ") + e.what());
     }

@@ -25,8 +25,9 @@ public:
     // One UI frame. The caller has started the ImGui platform frame (io.DisplaySize, input).
     void frame(const FrameTarget& target);
 
-    // Loads a scene; on failure the old one stays and the panel shows why.
-    void openScene(const std::filesystem::path& objPath);
+    // Loads a scene file of any registered format; on failure (an unknown extension too) the old
+    // scene stays and the panel shows why.
+    void openScene(const std::filesystem::path& path);
     void loadReference(const std::filesystem::path& exrPath);
 
     // See RenderWorker::setPublishCallback.

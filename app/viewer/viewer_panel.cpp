@@ -168,7 +168,7 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
     const bool filesOpen = ImGui::CollapsingHeader("Files");
     remember("Files", false);
     if (filesOpen) {
-        ImGui::InputText("scene .obj", scenePath_.data(), scenePath_.size());
+        ImGui::InputText("scene file", scenePath_.data(), scenePath_.size());
         actions.openScene = ImGui::Button("open scene");
         ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
         actions.loadReference = ImGui::Button("load reference");

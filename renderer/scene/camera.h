@@ -1,15 +1,9 @@
 #pragma once
-// A pinhole camera and the scene's JSON sidecar (NAME.json beside NAME.obj):
-//   {"position":[x,y,z], "look_at":[x,y,z], "up":[x,y,z], "fov_y":degrees, "width":W, "height":H,
-//    "point_lights":[{"position":[x,y,z], "intensity":[r,g,b]}]}     (point_lights optional)
-// Unknown keys are ignored so that later versions can add their own.
-#include <filesystem>
-#include <string>
-#include <vector>
+// A pinhole camera, and the settings that make one: its pose and image size (from the scene
+// description or a --camera file, scene_description.h, or framing the scene).
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "scene/mesh.h"
 #include "geometry/ray.h"
 
 namespace strata {
@@ -21,19 +15,11 @@ struct CameraPose {
     float fovYDegrees = 45.0f;
 };
 
-struct SceneSettings {
+struct CameraSettings {
     CameraPose pose;
     int width = 256;
     int height = 256;
-    std::vector<PointLight> pointLights;
 };
-
-// Reads and validates a scene's JSON sidecar; throws strata::Error naming the file (and line for
-// syntax errors, the key for a bad value).
-SceneSettings loadSceneSettings(const std::filesystem::path& path);
-// The same from memory: `name` stands for the file in messages. loadSceneSettings reads the file
-// and calls this, so the loader fuzzer exercises the one code path.
-SceneSettings parseSceneSettings(const std::string& text, const std::string& name);
 
 class Camera {
 public:

@@ -1,6 +1,6 @@
 #pragma once
 // A scene as loaders give it: geometry, materials and the lights that are not emitting triangles
-// (what the OBJ loader produces and what tests build by hand).
+// (what a scene format's loader produces, scene_format.h, and what tests build by hand).
 #include <array>
 #include <cstdint>
 #include <string>

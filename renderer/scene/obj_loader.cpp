@@ -1,5 +1,6 @@
 #include "scene/obj_loader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -212,7 +213,7 @@ bool isFinite(const glm::vec3& v) {
 // Builds the mesh from text that validateObj and validateMtl have accepted.
 MeshData buildMesh(const std::string& objText, const std::string& objName,
                    const std::string& mtlText, const std::string& mtlName, const ObjScan& scan,
-                   const std::set<std::string>& withRoughness, ObjLoadReport* report) {
+                   const std::set<std::string>& withRoughness, LoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
@@ -317,32 +318,50 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
 }  // namespace
 
 MeshData parseObj(const std::string& objText, const std::string& objName,
-                  const std::string& mtlText, const std::string& mtlName, ObjLoadReport* report) {
+                  const std::string& mtlText, const std::string& mtlName, LoadReport* report) {
     const ObjScan scan = validateObj(objText, objName);
-    const auto withRoughness = validateMtl(mtlText, mtlName);
-    return buildMesh(objText, objName, mtlText, mtlName, scan, withRoughness, report);
+    return buildMesh(objText, objName, mtlText, mtlName, scan, validateMtl(mtlText, mtlName), report);
 }
 
-ObjFiles readObjFiles(const std::filesystem::path& path) {
-    ObjFiles files{readTextFile(path, "scene"), path.string(), "", ""};
-    // Each MTL file is validated on its own so that a bad line is reported with its file and line.
-    for (const auto& library : validateObj(files.objText, files.objName).libraries) {
-        const auto mtlPath = path.parent_path() / library;
-        const std::string text = readTextFile(mtlPath, "material library (named by mtllib)");
-        validateMtl(text, mtlPath.string());
-        files.mtlText += text;
-        files.mtlText += '\n';
-        if (!files.mtlName.empty()) files.mtlName += ',';
-        files.mtlName += mtlPath.string();
+std::vector<SceneFile> readObjScene(const std::filesystem::path& path) {
+    std::vector<SceneFile> files{{path.filename().string(), readTextFile(path, "scene")}};
+    for (const auto& library : validateObj(files.front().bytes, path.string()).libraries) {
+        const bool read = std::any_of(files.begin(), files.end(),
+                                      [&](const SceneFile& file) { return file.name == library; });
+        if (read) continue;
+        files.push_back({library, readTextFile(path.parent_path() / library,
+                                               "material library (named by mtllib)")});
     }
-    if (files.mtlName.empty()) files.mtlName = files.objName;
     return files;
 }
 
-MeshData loadObjFile(const std::filesystem::path& path, ObjLoadReport* report) {
-    // The same path as a scene broadcast to MPI ranks: read the texts, then parse from memory.
-    const ObjFiles files = readObjFiles(path);
-    return parseObj(files.objText, files.objName, files.mtlText, files.mtlName, report);
+MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report) {
+    const SceneFile& obj = bundle.files.front();
+    const std::string objName = bundle.pathOf(obj.name);
+    const ObjScan scan = validateObj(obj.bytes, objName);
+    // Each MTL file is validated on its own, so that a bad line is reported with its file and line;
+    // tinyobjloader then reads them joined, as the OBJ's mtllib lines load them one after another.
+    // A file's material lines all follow a newmtl of its own (validateMtl), so the materials that
+    // give Pr in the joined text are those of the files together.
+    std::string mtlText;
+    std::string mtlName;
+    std::set<std::string> withRoughness;
+    for (const auto& library : scan.libraries) {
+        const std::string name = bundle.pathOf(library);
+        const SceneFile* mtl = bundle.find(library);
+        if (!mtl) throw Error(name + ": material library (named by mtllib) not among the scene's files");
+        withRoughness.merge(validateMtl(mtl->bytes, name));
+        mtlText += mtl->bytes;
+        mtlText += '\n';
+        if (!mtlName.empty()) mtlName += ',';
+        mtlName += name;
+    }
+    if (mtlName.empty()) mtlName = objName;
+    return buildMesh(obj.bytes, objName, mtlText, mtlName, scan, withRoughness, report);
+}
+
+MeshData loadObjFile(const std::filesystem::path& path, LoadReport* report) {
+    return parseObjScene(SceneBundle{path, readObjScene(path), std::nullopt, std::nullopt}, report);
 }
 
 }  // namespace strata

@@ -1,9 +1,11 @@
 #include "scene/scene_loader.h"
 
 #include <cstdio>
+#include <system_error>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "scene/scene_description.h"
 #include "util/error.h"
 #include "util/text_file.h"
 
@@ -11,55 +13,79 @@ namespace strata {
 namespace {
 
 // A view down -z onto the bounding box, far enough to see all of it.
-SceneSettings framingSettings(const Scene& scene) {
+CameraPose framingPose(const Scene& scene) {
     const glm::vec3 centre = 0.5f * (scene.boundsMin() + scene.boundsMax());
     const float radius = 0.5f * glm::length(scene.boundsMax() - scene.boundsMin());
-    SceneSettings settings;
-    settings.pose.fovYDegrees = 40.0f;
-    settings.pose.lookAt = centre;
-    settings.pose.position = centre + glm::vec3(0.0f, 0.0f, 3.0f * glm::max(radius, 1e-3f));
-    return settings;
+    CameraPose pose;
+    pose.fovYDegrees = 40.0f;
+    pose.lookAt = centre;
+    pose.position = centre + glm::vec3(0.0f, 0.0f, 3.0f * glm::max(radius, 1e-3f));
+    return pose;
+}
+
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code error;
+    return std::filesystem::equivalent(a, b, error);
 }
 
 }  // namespace
 
-SceneFiles readSceneFiles(const std::filesystem::path& objPath,
-                          const std::optional<std::filesystem::path>& cameraPath) {
-    if (!std::filesystem::is_regular_file(objPath)) {
-        throw Error(objPath.string() + ": no such scene file");
+SceneBundle readSceneBundle(const std::filesystem::path& path,
+                            const std::optional<std::filesystem::path>& cameraPath) {
+    if (!std::filesystem::is_regular_file(path)) {
+        throw Error(path.string() + ": no such scene file");
     }
-    SceneFiles files{readObjFiles(objPath), "", objPath, {}};
-    if (cameraPath) {
-        files.cameraPath = *cameraPath;
-    } else if (auto sidecar = std::filesystem::path(objPath).replace_extension(".json");
-               std::filesystem::is_regular_file(sidecar)) {
-        files.cameraPath = sidecar;
+    SceneBundle bundle{path, sceneFormatOf(path).read(path), std::nullopt, std::nullopt};
+    const auto sidecar = std::filesystem::path(path).replace_extension(".json");
+    // --camera naming the description itself: read once, or its point lights would count twice.
+    const bool cameraIsSidecar = cameraPath && sameFile(*cameraPath, sidecar);
+    if (std::filesystem::is_regular_file(sidecar)) {
+        SceneFile description{sidecar.filename().string(), readTextFile(sidecar, "scene description")};
+        const std::string name = bundle.pathOf(description.name);
+        if (cameraIsSidecar) parseCameraFile(description.bytes, name);  // its camera is required
+        for (const std::string& file : parseSceneDescription(description.bytes, name).files) {
+            if (bundle.find(file)) continue;
+            bundle.files.push_back({file, readTextFile(path.parent_path() / file,
+                                                       "file (named by " + name + ")")});
+        }
+        bundle.description = std::move(description);
     }
-    if (!files.cameraPath.empty()) files.cameraText = readTextFile(files.cameraPath, "camera file");
-    return files;
+    if (cameraPath && !cameraIsSidecar) {
+        bundle.camera = SceneFile{cameraPath->string(), readTextFile(*cameraPath, "camera file")};
+    }
+    return bundle;
 }
 
-LoadedScene parseScene(const SceneFiles& files) {
-    ObjLoadReport report;
-    MeshData mesh = parseObj(files.obj.objText, files.obj.objName, files.obj.mtlText,
-                             files.obj.mtlName, &report);
+LoadedScene parseScene(SceneBundle bundle) {
+    LoadReport report;
+    MeshData mesh = parseSceneMesh(bundle, &report);
     if (mesh.triangles.empty()) {
-        throw Error(files.obj.objName + ": the scene has no usable triangles");
+        throw Error(bundle.path.string() + ": the scene has no usable triangles");
     }
-    std::optional<SceneSettings> settings;
-    if (!files.cameraPath.empty()) {
-        settings = parseSceneSettings(files.cameraText, files.cameraPath.string());
-        mesh.pointLights = settings->pointLights;
+    SceneDescription description;
+    if (bundle.description) {
+        description = parseSceneDescription(bundle.description->bytes,
+                                            bundle.pathOf(bundle.description->name));
+    }
+    mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
+                            description.pointLights.end());
+    CameraSettings settings = description.camera;
+    bool posed = description.hasPose;
+    if (bundle.camera) {
+        const SceneDescription cameraFile = parseCameraFile(bundle.camera->bytes, bundle.camera->name);
+        settings = cameraFile.camera;
+        posed = true;
+        mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
+                                cameraFile.pointLights.end());
     }
     Scene scene(std::move(mesh));
-    if (!settings) settings = framingSettings(scene);
-    return LoadedScene{std::move(scene), std::move(*settings), report, files.objPath,
-                       files.cameraPath};
+    if (!posed) settings.pose = framingPose(scene);
+    return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
 }
 
-LoadedScene loadScene(const std::filesystem::path& objPath,
+LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath) {
-    return parseScene(readSceneFiles(objPath, cameraPath));
+    return parseScene(readSceneBundle(path, cameraPath));
 }
 
 std::string describeScene(const LoadedScene& loaded) {
@@ -68,7 +94,7 @@ std::string describeScene(const LoadedScene& loaded) {
     std::snprintf(line, sizeof line,
                   "%s: %zu triangles (%zu degenerate dropped, %zu non-finite vertices), "
                   "%zu emitting (area %.4g), max albedo %.3g, %zu point lights",
-                  loaded.objPath.string().c_str(), s.triangles, loaded.report.droppedTriangles,
+                  loaded.scenePath().string().c_str(), s.triangles, loaded.report.droppedTriangles,
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
                   loaded.scene.mesh().pointLights.size());
     return line;

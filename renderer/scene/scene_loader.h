@@ -1,43 +1,41 @@
 #pragma once
-// A scene as users give it: NAME.obj (+ its MTL) and the camera sidecar NAME.json beside it.
+// A scene as users give it: a scene file of a registered format (scene_format.h), the files it
+// refers to, and the scene description NAME.json beside it (scene_description.h).
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "scene/camera.h"
-#include "scene/obj_loader.h"
 #include "scene/scene.h"
+#include "scene/scene_format.h"
 
 namespace strata {
 
 struct LoadedScene {
     Scene scene;
-    SceneSettings settings;
-    ObjLoadReport report;
-    std::filesystem::path objPath;
-    std::filesystem::path cameraPath;  // empty when the camera was framed automatically
+    CameraSettings settings;
+    LoadReport report;
+    SceneBundle bundle;  // the files it was parsed from
+
+    const std::filesystem::path& scenePath() const { return bundle.path; }
 };
 
-// A scene's files as text, read once (on MPI rank 0) and parsed from memory on every rank, so all
-// render the same bytes.
-struct SceneFiles {
-    ObjFiles obj;
-    std::string cameraText;
-    std::filesystem::path objPath;
-    std::filesystem::path cameraPath;  // empty: no camera file, the camera frames the scene
-};
+// Reads the scene's files: the scene file `path` and those it refers to, the scene description
+// NAME.json beside it when there is one (and the files it refers to), and the camera file when
+// given. Throws strata::Error naming a missing or malformed file; for a file that is not there,
+// "PATH: no such scene file", else for an extension no format has,
+// "PATH: unknown scene format '.EXT' (known: ...)", before any file is read.
+SceneBundle readSceneBundle(const std::filesystem::path& path,
+                            const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
-// Reads the OBJ, its MTL files and the camera file that loadScene would use; throws
-// strata::Error naming a missing or malformed file.
-SceneFiles readSceneFiles(const std::filesystem::path& objPath,
-                          const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
-// Builds the scene from files read by readSceneFiles; throws strata::Error naming the bad file.
-LoadedScene parseScene(const SceneFiles& files);
+// Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
+// by the main file's format, the point lights of the description and of the camera file's
+// "point_lights", the camera from the camera file, else the description, else framing the scene.
+// Throws strata::Error naming the bad file.
+LoadedScene parseScene(SceneBundle bundle);
 
-// Loads the OBJ and the camera: `cameraPath` when given, else NAME.json beside the OBJ when it
-// exists, else a camera framing the scene's bounds. Throws strata::Error naming the bad file.
-// readSceneFiles then parseScene.
-LoadedScene loadScene(const std::filesystem::path& objPath,
+// readSceneBundle then parseScene.
+LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo.

@@ -17,7 +17,8 @@ using namespace strata;
 
 namespace {
 
-// A valid scene to mutate: a unit quad light above a floor, with its material library and camera.
+// A valid scene to mutate: a unit quad light above a floor, with its material library and its
+// description (the camera).
 const std::string kObj =
     "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl white\nf 1 3 2\nf 1 4 3\n";
 const std::string kMtl = "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
@@ -33,6 +34,11 @@ struct BadInputCase {
 
 // Files a case does not name are the valid ones above.
 const std::vector<BadInputCase> kCliCases = {
+    // Scene file
+    {"scene file of an unknown format", {{"s.fbx", kObj}}, "render {dir}/s.fbx",
+     "s.fbx: unknown scene format '.fbx' (known: .obj)"},
+    {"scene file of an unknown format, missing", {}, "render {dir}/absent.fbx",
+     "absent.fbx: no such scene file"},
     // OBJ
     {"OBJ file missing", {}, "render {dir}/absent.obj", "absent.obj: no such scene file"},
     {"OBJ path is a directory", {}, "render {dir}", "no such scene file"},
@@ -82,31 +88,37 @@ const std::vector<BadInputCase> kCliCases = {
      "s.mtl:2: 'inf' is not a finite number"},
     {"MTL newmtl without a name", {{"s.mtl", "newmtl\n"}}, "render {dir}/s.obj",
      "s.mtl:1: newmtl needs one material name"},
-    // Camera JSON
-    {"camera JSON syntax error", {{"s.json", "{\n\"position\": [0,0,\n}"}}, "render {dir}/s.obj",
+    // Scene description JSON (s.json beside s.obj)
+    {"scene JSON syntax error", {{"s.json", "{\n\"position\": [0,0,\n}"}}, "render {dir}/s.obj",
      "s.json: invalid JSON: parse error at line 3"},
-    {"camera JSON not an object", {{"s.json", "[1, 2, 3]"}}, "render {dir}/s.obj",
+    {"scene JSON not an object", {{"s.json", "[1, 2, 3]"}}, "render {dir}/s.obj",
      "s.json: expected a JSON object"},
-    {"camera JSON key missing", {{"s.json", R"({"position":[0,0,0]})"}}, "render {dir}/s.obj",
+    {"scene JSON key missing", {{"s.json", R"({"position":[0,0,0]})"}}, "render {dir}/s.obj",
      "s.json: missing key \"look_at\""},
-    {"camera JSON vector of strings",
+    {"scene JSON vector of strings",
      {{"s.json", R"({"position":["a",0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40})"}},
      "render {dir}/s.obj", "s.json: \"position\" must be an array of 3 numbers"},
-    {"camera JSON value beyond float range",
+    {"scene JSON value beyond float range",
      {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":1e300})"}},
      "render {dir}/s.obj", "s.json: \"fov_y\" must be finite and within float range"},
-    {"camera JSON fov of 180",
+    {"scene JSON fov of 180",
      {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":180})"}},
      "render {dir}/s.obj", "s.json: fov_y must be in (0, 180) degrees"},
-    {"camera JSON up parallel to the view",
+    {"scene JSON up parallel to the view",
      {{"s.json", R"({"position":[0,0,0],"look_at":[0,1,0],"up":[0,1,0],"fov_y":40})"}},
      "render {dir}/s.obj", "s.json: up must not be parallel to the view direction"},
-    {"camera JSON width 0",
+    {"scene JSON width 0",
      {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40,"width":0})"}},
      "render {dir}/s.obj", "s.json: \"width\" must be an integer in 1..65536"},
-    {"camera JSON point light without intensity",
+    {"scene JSON point light without intensity",
      {{"s.json", R"({"position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40,"point_lights":[{"position":[0,1,0]}]})"}},
      "render {dir}/s.obj", "s.json: missing key \"intensity\""},
+    {"scene JSON light of an unknown type",
+     {{"s.json", R"({"lights":[{"type":"spot","position":[0,1,0],"intensity":[1,1,1]}]})"}},
+     "render {dir}/s.obj", "s.json: unknown light type 'spot' (known: point)"},
+    {"scene JSON light without a type",
+     {{"s.json", R"({"lights":[{"position":[0,1,0],"intensity":[1,1,1]}]})"}},
+     "render {dir}/s.obj", "s.json: each of \"lights\" needs a \"type\" (known: point)"},
     {"--camera file missing", {}, "render {dir}/s.obj --camera {dir}/none.json",
      "none.json: cannot open camera file"},
     // strata render options

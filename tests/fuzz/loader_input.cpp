@@ -6,23 +6,23 @@
 #include <string>
 #include <glm/geometric.hpp>
 
-#include "scene/camera.h"
+#include "scene/scene_description.h"
+#include "scene/scene_format.h"
 #include "util/error.h"
-#include "scene/obj_loader.h"
 
 namespace strata::fuzz {
 namespace {
 
 void require(bool promise, const char* what) {
-    if (!promise) throw std::logic_error(std::string("the OBJ loader returned a mesh with ") + what);
+    if (!promise) throw std::logic_error(std::string("the scene loader returned a mesh with ") + what);
 }
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// What the loader promises of every mesh it returns (obj_loader.h, mesh.h), which the renderer
+// What a loader promises of every mesh it returns (scene_format.h, mesh.h), which the renderer
 // relies on: indices in range, one material per triangle, finite vertices and a non-zero float
 // area on every kept triangle, Kd in [0, 1] and finite Ke >= 0.
-void checkMesh(const MeshData& mesh, const ObjLoadReport& report) {
+void checkMesh(const MeshData& mesh, const LoadReport& report) {
     require(mesh.triangleMaterials.size() == mesh.triangles.size(), "not one material per triangle");
     require(report.faces == mesh.triangles.size(), "a wrong face count");
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -54,18 +54,22 @@ std::string_view nextPart(std::string_view& rest) {
 }  // namespace
 
 void parseLoaderInput(std::string_view input) {
-    const std::string obj(nextPart(input));
-    const std::string mtl(nextPart(input));
+    // The OBJ's "mtllib fuzz.mtl" loads the MTL part, as from files.
+    SceneBundle bundle{"fuzz.obj", {}, std::nullopt, std::nullopt};
+    bundle.files.push_back({"fuzz.obj", std::string(nextPart(input))});
+    bundle.files.push_back({"fuzz.mtl", std::string(nextPart(input))});
     const std::string json(input);
     try {
-        ObjLoadReport report;
-        const MeshData mesh = parseObj(obj, "fuzz.obj", mtl, "fuzz.mtl", &report);
+        LoadReport report;
+        const MeshData mesh = parseSceneMesh(bundle, &report);
         checkMesh(mesh, report);
     } catch (const Error&) {
     }
     try {
-        const SceneSettings settings = parseSceneSettings(json, "fuzz.json");
-        if (settings.width < 1 || settings.height < 1) throw std::logic_error("camera size below 1");
+        const SceneDescription description = parseSceneDescription(json, "fuzz.json");
+        if (description.camera.width < 1 || description.camera.height < 1) {
+            throw std::logic_error("camera size below 1");
+        }
     } catch (const Error&) {
     }
 }

@@ -1,8 +1,9 @@
 #pragma once
-// One input of the scene-loader fuzzer: OBJ text, a NUL byte, MTL text, a NUL byte, camera JSON
-// (missing parts are empty), fed through strata::parseObj and strata::parseSceneSettings, the
-// code paths of loading files. Shared by the fuzzer and tests/scene/test_fuzz_regressions.cpp, which
-// replays the seed corpus and every finding.
+// One input of the scene-loader fuzzer: OBJ text, a NUL byte, MTL text, a NUL byte, scene
+// description JSON (missing parts are empty). The OBJ and MTL become the scene files fuzz.obj and
+// fuzz.mtl of a bundle, parsed by strata::parseSceneMesh, and the JSON goes through
+// strata::parseSceneDescription: the code paths of loading files. Shared by the fuzzer and
+// tests/scene/test_fuzz_regressions.cpp, which replays the seed corpus and every finding.
 #include <string_view>
 
 namespace strata::fuzz {

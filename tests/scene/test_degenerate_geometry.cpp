@@ -37,7 +37,7 @@ TEST_CASE("degenerate geometry: dropped and counted at load, never a non-finite 
         "v -1 2 -1\nv 1 2 -1\nv 1 2 1\nv -1 2 1\n"
         "f 27 28 29\nf 27 29 30\n";
     const std::string mtl = "newmtl grey\nKd 0.7 0.7 0.7\nnewmtl light\nKd 0 0 0\nKe 5 5 5\n";
-    ObjLoadReport report;
+    LoadReport report;
     MeshData mesh = parseObj(obj, "d.obj", mtl, "d.mtl", &report);
     CHECK(report.nonFiniteVertices == 2);
     CHECK(report.droppedTriangles == 5);  // collinear, repeated, duplicate, NaN, Inf

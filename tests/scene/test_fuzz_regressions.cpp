@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "fuzz/loader_input.h"
-#include "scene/camera.h"
 #include "scene/obj_loader.h"
+#include "scene/scene_description.h"
 #include "util/error.h"
 #include "test_support.h"
 
@@ -41,14 +41,14 @@ TEST_CASE("fuzz regressions: a '#' inside a face line hides the rest of it from 
     // Finding crash-f406ca82: the line checks read "f 1 2 3/1#/1 5" as "f 1 2 3/1", tinyobjloader
     // read the 5 as well and the loader indexed past the 4th and last vertex.
     const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3/1#/1 5\nf 1 3 4 # 5\n";
-    ObjLoadReport report;
+    LoadReport report;
     const MeshData mesh = parseObj(obj, "hash.obj", "", "hash.mtl", &report);
     CHECK(mesh.triangles.size() == 2);
     CHECK(report.faces == 2);
 }
 
 TEST_CASE("fuzz regressions: nan, inf and out-of-range numbers in OBJ and MTL text") {
-    ObjLoadReport report;
+    LoadReport report;
     const MeshData mesh = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 0 -inf 0\nf 1 2 3\nf 1 2 4\nf 1 5 3\n",
                                    "n.obj", "", "n.mtl", &report);
     // tinyobjloader alone reads "nan" as 0, which made the 2nd face a valid triangle.
@@ -61,8 +61,8 @@ TEST_CASE("fuzz regressions: nan, inf and out-of-range numbers in OBJ and MTL te
                          "nan.mtl:2: 'nan' is not a finite number", Error);
 }
 
-TEST_CASE("fuzz regressions: a JSON number beyond double range is a camera-file error") {
+TEST_CASE("fuzz regressions: a JSON number beyond double range is a scene-description error") {
     // Finding crash-4633922f: nlohmann threw out_of_range, not parse_error, and it escaped.
-    CHECK_THROWS_WITH_AS(parseSceneSettings("{\"fov_y\": 1e395}", "big.json"),
+    CHECK_THROWS_WITH_AS(parseSceneDescription("{\"fov_y\": 1e395}", "big.json"),
                          "big.json: invalid JSON: number overflow parsing '1e395'", Error);
 }

@@ -22,7 +22,7 @@ std::string errorOf(const std::string& obj, const std::string& mtl = kMtl) {
 }  // namespace
 
 TEST_CASE("obj: quads are triangulated, materials and emission read") {
-    ObjLoadReport report;
+    LoadReport report;
     const MeshData mesh = parseObj(
         "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl white\nf 1 2 3 4\nusemtl lamp\nf -4 -2 -1\n",
         "scene.obj", kMtl, "scene.mtl", &report);
@@ -36,7 +36,7 @@ TEST_CASE("obj: quads are triangulated, materials and emission read") {
 }
 
 TEST_CASE("obj: degenerate triangles are dropped and counted") {
-    ObjLoadReport report;
+    LoadReport report;
     const MeshData mesh = parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 1 4\nf 1 2 4\n",
                                    "scene.obj", "", "scene.mtl", &report);
     CHECK(mesh.triangles.size() == 1);

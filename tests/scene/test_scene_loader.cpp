@@ -1,33 +1,125 @@
 #include <doctest/doctest.h>
 
+#include <fstream>
+#include <glm/geometric.hpp>
+
 #include "util/error.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 
 using namespace strata;
 
+namespace {
+
+// A unit quad light facing +y, its material library and a scene description with two lights.
+void writeQuadScene(const std::filesystem::path& dir, const std::string& description) {
+    std::ofstream(dir / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl white\n"
+                                    "f 1 3 2\nf 1 4 3\n";
+    std::ofstream(dir / "s.mtl") << "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
+    if (!description.empty()) std::ofstream(dir / "s.json") << description;
+}
+
+const char* kPose = R"("position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60)";
+
+}  // namespace
+
 TEST_CASE("scene loader: files read once then parsed give the scene loadScene gives") {
     const auto obj = test::sourceDir() / "assets/cornell/cornell.obj";
-    const SceneFiles files = readSceneFiles(obj);
-    CHECK(files.cameraPath == test::sourceDir() / "assets/cornell/cornell.json");
-    CHECK(files.obj.mtlName.find("cornell.mtl") != std::string::npos);
-    CHECK(!files.cameraText.empty());
+    const SceneBundle files = readSceneBundle(obj);
+    REQUIRE(files.files.size() == 2);
+    CHECK(files.files[1].name == "cornell.mtl");
+    REQUIRE(files.description);
+    CHECK(files.description->name == "cornell.json");
+    CHECK(!files.description->bytes.empty());
     // A copy of the bytes, as another MPI rank would receive them.
-    const SceneFiles received = files;
+    const SceneBundle received = files;
     const LoadedScene parsed = parseScene(received);
     const LoadedScene loaded = loadScene(obj);
     CHECK(parsed.scene.summary().triangles == loaded.scene.summary().triangles);
     CHECK(parsed.scene.summary().emittingArea == loaded.scene.summary().emittingArea);
     CHECK(parsed.settings.width == loaded.settings.width);
     CHECK(parsed.settings.pose.lookAt == loaded.settings.pose.lookAt);
-    CHECK(parsed.objPath == obj);
+    CHECK(parsed.scenePath() == obj);
 }
 
 TEST_CASE("scene loader: a missing scene or camera file is named when reading") {
     const auto dir = test::scratchDir("scene-files");
-    CHECK_THROWS_WITH_AS(readSceneFiles(dir / "absent.obj"),
+    CHECK_THROWS_WITH_AS(readSceneBundle(dir / "absent.obj"),
                          doctest::Contains("absent.obj: no such scene file"), Error);
-    CHECK_THROWS_WITH_AS(readSceneFiles(test::sourceDir() / "assets/cornell/cornell.obj",
+    CHECK_THROWS_WITH_AS(readSceneBundle(test::sourceDir() / "assets/cornell/cornell.obj",
                                         dir / "absent.json"),
                          doctest::Contains("absent.json: cannot open camera file"), Error);
+}
+
+TEST_CASE("scene loader: the lights are the scene description's, with or without --camera") {
+    const auto dir = test::scratchDir("scene-lights");
+    writeQuadScene(dir, std::string("{") + kPose +
+                            R"(,"lights":[{"type":"point","position":[0,1,0],"intensity":[1,1,1]}],)"
+                            R"("point_lights":[{"position":[0,2,0],"intensity":[2,2,2]}]})");
+    std::ofstream(dir / "cam.json")
+        << R"({"position":[0.5,3,-2],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":30,"width":8,)"
+           R"("lights":[{"type":"point","position":[9,9,9],"intensity":[9,9,9]}],)"
+           R"("point_lights":[{"position":[0,3,0],"intensity":[3,3,3]}]})";
+
+    const LoadedScene own = loadScene(dir / "s.obj");
+    REQUIRE(own.scene.mesh().pointLights.size() == 2);
+    CHECK(own.scene.mesh().pointLights[0].intensity == glm::vec3(1.0f));
+    CHECK(own.scene.mesh().pointLights[1].intensity == glm::vec3(2.0f));
+    CHECK(own.settings.pose.position == glm::vec3(0.5f, 1.0f, -1.0f));
+
+    // The camera from cam.json; the lights still the scene's, plus cam.json's older point_lights.
+    const LoadedScene viewed = loadScene(dir / "s.obj", dir / "cam.json");
+    CHECK(viewed.settings.pose.position == glm::vec3(0.5f, 3.0f, -2.0f));
+    CHECK(viewed.settings.width == 8);
+    REQUIRE(viewed.scene.mesh().pointLights.size() == 3);
+    CHECK(viewed.scene.mesh().pointLights[2].intensity == glm::vec3(3.0f));
+
+    // --camera naming the description itself counts its lights once.
+    const LoadedScene same = loadScene(dir / "s.obj", dir / "s.json");
+    CHECK_FALSE(same.bundle.camera);
+    CHECK(same.scene.mesh().pointLights.size() == 2);
+    CHECK(same.settings.pose.position == own.settings.pose.position);
+}
+
+TEST_CASE("scene loader: a description without the camera keys frames the scene, and --camera needs them") {
+    const auto dir = test::scratchDir("scene-framed");
+    writeQuadScene(dir, R"({"width":12,"lights":[{"type":"point","position":[0,1,0],"intensity":[1,1,1]}]})");
+    const LoadedScene framed = loadScene(dir / "s.obj");
+    CHECK(framed.settings.width == 12);
+    CHECK(framed.settings.height == 256);
+    CHECK(framed.settings.pose.lookAt == glm::vec3(0.5f, 0.0f, 0.5f));  // the bounds' centre
+    CHECK(framed.settings.pose.position.z > 1.0f);
+    CHECK(framed.scene.mesh().pointLights.size() == 1);
+    CHECK_THROWS_WITH_AS(loadScene(dir / "s.obj", dir / "s.json"),
+                         ((dir / "s.json").string() + ": missing key \"position\"").c_str(), Error);
+}
+
+TEST_CASE("scene loader: an unknown light type in the description is named when reading") {
+    const auto dir = test::scratchDir("scene-unknown-light");
+    writeQuadScene(dir, R"({"lights":[{"type":"area","position":[0,1,0]}]})");
+    CHECK_THROWS_WITH_AS(readSceneBundle(dir / "s.obj"),
+                         ((dir / "s.json").string() + ": unknown light type 'area' (known: point)").c_str(),
+                         Error);
+}
+
+TEST_CASE("scene loader: every bundled and shared scene loads, with the point lights of its description") {
+    for (const char* scene : {"assets/cornell/cornell.obj", "assets/furnace/furnace.obj", "assets/glossy/glossy.obj"}) {
+        CAPTURE(scene);
+        const LoadedScene loaded = loadScene(test::sourceDir() / scene);
+        CHECK(loaded.bundle.description);
+        CHECK(loaded.scene.summary().triangles > 0);
+    }
+    size_t scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::sharedDir() / "scenes")) {
+        const auto obj = entry.path() / "scene.obj";
+        if (!std::filesystem::is_regular_file(obj)) continue;
+        CAPTURE(obj);
+        CHECK(loadScene(obj).bundle.description);
+        ++scenes;
+    }
+    CHECK(scenes >= 4);
+    // Its description gives its light under the older key, point_lights.
+    const LoadedScene point = loadScene(test::sharedDir() / "scenes/cornell_point/scene.obj");
+    REQUIRE(point.scene.mesh().pointLights.size() == 1);
+    CHECK(point.scene.mesh().pointLights[0].intensity == glm::vec3(30000.0f));
 }

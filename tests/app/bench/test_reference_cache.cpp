@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <optional>
 
 #include "bench/reference_cache.h"
 #include "test_support.h"
@@ -56,6 +57,9 @@ TEST_CASE("reference cache: the key changes with the files, camera and depth, an
     CHECK(keyOf(5, 16) == base);
     CHECK(keyOf(4, 16) != base);
     CHECK(keyOf(5, 17) != base);
+    // A material library beside the scene that its OBJ does not name is not the scene's.
+    std::ofstream(dir / "unused.mtl") << "newmtl other\nKd 0.1 0.1 0.1\n";
+    CHECK(keyOf(5, 16) == base);
     std::ofstream(dir / "cornell.mtl", std::ios::app) << "\n# edited\n";
     CHECK(keyOf(5, 16) != base);
 
@@ -66,4 +70,34 @@ TEST_CASE("reference cache: the key changes with the files, camera and depth, an
     CHECK(path.filename().string().rfind("cornell-d3-", 0) == 0);
     CHECK(path.extension() == ".exr");
     CHECK(sceneName("x/cornell_point/scene.obj") == "cornell_point");
+}
+
+TEST_CASE("reference cache: one changed byte of an MTL file, the description or the camera file changes the key") {
+    const auto dir = test::scratchDir("reference-key-byte");
+    for (const char* name : {"cornell.obj", "cornell.mtl", "cornell.json"}) {
+        std::filesystem::copy_file(test::sourceDir() / "assets" / "cornell" / name, dir / name);
+    }
+    std::filesystem::copy_file(dir / "cornell.json", dir / "camera.json");
+    const auto keyOf = [&](const std::optional<std::filesystem::path>& cameraFile = std::nullopt) {
+        const LoadedScene loaded = loadScene(dir / "cornell.obj", cameraFile);
+        return referenceKey(loaded, Camera(loaded.settings.pose, 16, 16), depth(5));
+    };
+    // Overwrites one byte in place: the file keeps its size, so only its bytes tell it changed.
+    const auto changeByte = [](const std::filesystem::path& path, size_t at, char byte) {
+        std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+        file.seekp(static_cast<std::streamoff>(at));
+        file.put(byte);
+    };
+    const uint64_t base = keyOf();
+    changeByte(dir / "cornell.mtl", 2, 'a');  // "# Albedos" -> "# albedos", a comment
+    const uint64_t edited = keyOf();
+    CHECK(edited != base);
+    changeByte(dir / "cornell.json", 1, '\t');  // whitespace: the same camera
+    CHECK(keyOf() != edited);
+
+    // The camera file is keyed as a file of its own, beside the description.
+    const uint64_t withCamera = keyOf(dir / "camera.json");
+    CHECK(withCamera != keyOf());
+    changeByte(dir / "camera.json", 1, '\t');
+    CHECK(keyOf(dir / "camera.json") != withCamera);
 }

@@ -137,6 +137,28 @@ TEST_CASE("a scene that fails to load leaves the old one rendering") {
     h.frame();
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
+    // A file of no registered format (as dropped on the window): the format's one line.
+    std::ofstream(dir / "model.fbx") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    h.viewer.openScene(dir / "model.fbx");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().message() ==
+          "cannot open scene: " + (dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj)");
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("a scene file of a registered extension, in any case, opens in place of the old one") {
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const auto dir = test::scratchDir("viewer-open-scene");
+    std::ofstream(dir / "QUAD.OBJ") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl lamp\nf 1 2 3 4\n";
+    std::ofstream(dir / "quad.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
+    h.viewer.openScene(dir / "QUAD.OBJ");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene != before);
+    CHECK(h.viewer.workerConfig().scene->scene.summary().triangles == 2);
+    CHECK(h.viewer.panel().message() == "opened " + (dir / "QUAD.OBJ").string());
+    CHECK(h.viewer.panel().scenePath() == (dir / "QUAD.OBJ").string());
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
 

@@ -1,0 +1,35 @@
+#pragma once
+// The scene description: NAME.json beside the scene file NAME.EXT (of any format), with what the
+// scene's geometry does not say. Every key is optional; unknown keys are ignored so that later
+// versions can add their own.
+//   camera: "position", "look_at", "up": [x,y,z], "fov_y": degrees (all four, or none: the camera
+//           then frames the scene), "width", "height": the image size in pixels (default 256)
+//   "lights": [{"type": "point", "position": [x,y,z], "intensity": [r,g,b]}]   intensity in W/sr
+//   "point_lights": [{"position": [x,y,z], "intensity": [r,g,b]}]   point lights, the older key
+// A --camera file has the camera keys, all required, and may have "point_lights"; its "lights"
+// are not read: with --camera the lights are still the scene's.
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/mesh.h"
+
+namespace strata {
+
+struct SceneDescription {
+    CameraSettings camera;  // the image size, and the pose when hasPose
+    bool hasPose = false;
+    std::vector<PointLight> pointLights;
+    // Files its entries refer to, relative to its folder: the scene's bundle carries them beside
+    // the scene's own files (scene_format.h), so that every rank parses the same bytes.
+    std::vector<std::string> files;
+};
+
+// Parses and validates a scene description; `name` stands for the file in messages. Throws
+// strata::Error naming it (and the line for syntax errors, the key or light type for a bad value).
+SceneDescription parseSceneDescription(const std::string& text, const std::string& name);
+
+// The same for a --camera file: hasPose is always set, the lights are its "point_lights".
+SceneDescription parseCameraFile(const std::string& text, const std::string& name);
+
+}  // namespace strata

@@ -1,0 +1,68 @@
+#include "scene/scene_format.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "scene/obj_loader.h"
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+// Every format Strata reads. A new one is its loader and one line here.
+const std::vector<SceneFormat>& sceneFormats() {
+    static const std::vector<SceneFormat> formats = {
+        {{".obj"}, readObjScene, parseObjScene},
+    };
+    return formats;
+}
+
+std::string lowerCase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+}  // namespace
+
+const SceneFile* SceneBundle::find(std::string_view name) const {
+    const auto it = std::find_if(files.begin(), files.end(),
+                                 [&](const SceneFile& file) { return file.name == name; });
+    return it == files.end() ? nullptr : &*it;
+}
+
+std::string SceneBundle::pathOf(const std::string& name) const {
+    return (path.parent_path() / name).string();
+}
+
+const SceneFormat& sceneFormatOf(const std::filesystem::path& path) {
+    const std::string extension = path.extension().string();
+    const std::string wanted = lowerCase(extension);
+    for (const SceneFormat& format : sceneFormats()) {
+        for (std::string_view known : format.extensions) {
+            if (known == wanted) return format;
+        }
+    }
+    const std::string known = " (known: " + knownSceneExtensions() + ")";
+    if (extension.empty()) throw Error(path.string() + ": no extension to tell the scene format" + known);
+    throw Error(path.string() + ": unknown scene format '" + extension + "'" + known);
+}
+
+std::string knownSceneExtensions() {
+    std::string known;
+    for (const SceneFormat& format : sceneFormats()) {
+        for (std::string_view extension : format.extensions) {
+            if (!known.empty()) known += ", ";
+            known += extension;
+        }
+    }
+    return known;
+}
+
+MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report) {
+    const SceneFormat& format = sceneFormatOf(bundle.path);
+    if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
+    return format.parse(bundle, report);
+}
+
+}  // namespace strata

@@ -1,0 +1,68 @@
+#pragma once
+// Scene file formats behind one door. A scene is read in two steps, so that MPI rank 0 can read
+// it and every rank parse the same bytes (app/render_job.h):
+//   reading: the main file's path -> every file the scene needs, as bytes (a SceneBundle);
+//   parsing: a SceneBundle -> MeshData, from memory only.
+// Each format provides the two in its own loader file and is one line of the table in
+// scene_format.cpp; the main file's extension picks it.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace strata {
+
+struct LoadReport {
+    size_t faces = 0;             // triangles read
+    size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
+    size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
+};
+
+struct SceneFile {
+    std::string name;  // relative to the main file's folder, as the scene refers to it
+    std::string bytes;
+};
+
+// A scene's files, read once and parsed anywhere: the names are relative to the main file's
+// folder, so a bundle parses to the same scene on any host.
+struct SceneBundle {
+    // The main file as it was given where the bundle was read; messages name files by it.
+    std::filesystem::path path;
+    // The format's files, the main one first (named path.filename()), then those it refers to
+    // (an OBJ's MTL files), then those the scene description refers to.
+    std::vector<SceneFile> files;
+    // NAME.json beside the main file (scene_description.h), when there is one.
+    std::optional<SceneFile> description;
+    // The --camera file, when one was given, named as given: it need not lie in the folder.
+    std::optional<SceneFile> camera;
+
+    // The file of that name among `files`; null when there is none.
+    const SceneFile* find(std::string_view name) const;
+    // A file of `files` or the description as messages name it: the main file's folder / name.
+    std::string pathOf(const std::string& name) const;
+};
+
+struct SceneFormat {
+    std::vector<std::string_view> extensions;  // lower case, with the dot
+    // The main file (`path`, which exists) and every file it refers to; throws strata::Error
+    // naming a missing or malformed file.
+    std::vector<SceneFile> (*read)(const std::filesystem::path& path);
+    // The mesh from a bundle's files; throws strata::Error naming the file (and line).
+    MeshData (*parse)(const SceneBundle& bundle, LoadReport* report);
+};
+
+// The format of `path` by its extension, in any case; throws strata::Error
+// "PATH: unknown scene format '.EXT' (known: .obj)" for one that is not in the table (and names
+// the known ones too when there is no extension).
+const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
+
+// The registered extensions for messages and help: ".obj".
+std::string knownSceneExtensions();
+
+// The mesh of `bundle`, parsed by the format of its main file.
+MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report = nullptr);
+
+}  // namespace strata

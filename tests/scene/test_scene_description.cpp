@@ -1,0 +1,98 @@
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "scene/scene_description.h"
+#include "util/error.h"
+
+using namespace strata;
+
+namespace {
+
+const std::string kPose = R"("position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40)";
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseSceneDescription(text, "s.json");
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("scene description: the camera, typed lights and the older point_lights are read") {
+    const SceneDescription d = parseSceneDescription(
+        "{" + kPose + R"(,"width":32,"height":16,"extra":"ignored",)"
+        R"("lights":[{"type":"point","position":[1,2,3],"intensity":[4,5,6]}],)"
+        R"("point_lights":[{"position":[7,8,9],"intensity":[1,2,3]}]})",
+        "s.json");
+    CHECK(d.hasPose);
+    CHECK(d.camera.pose.lookAt == glm::vec3(0, 0, 1));
+    CHECK(d.camera.pose.fovYDegrees == 40.0f);
+    CHECK(d.camera.width == 32);
+    CHECK(d.camera.height == 16);
+    REQUIRE(d.pointLights.size() == 2);
+    CHECK(d.pointLights[0].position == glm::vec3(1, 2, 3));
+    CHECK(d.pointLights[0].intensity == glm::vec3(4, 5, 6));
+    CHECK(d.pointLights[1].position == glm::vec3(7, 8, 9));
+    CHECK(d.pointLights[1].intensity == glm::vec3(1, 2, 3));
+    CHECK(d.files.empty());
+}
+
+TEST_CASE("scene description: without the camera keys the camera is left to the scene's framing") {
+    const SceneDescription lightsOnly = parseSceneDescription(
+        R"({"width":8,"lights":[{"type":"point","position":[0,1,0],"intensity":[2,2,2]}]})", "s.json");
+    CHECK_FALSE(lightsOnly.hasPose);
+    CHECK(lightsOnly.camera.width == 8);
+    CHECK(lightsOnly.camera.height == 256);
+    CHECK(lightsOnly.pointLights.size() == 1);
+    const SceneDescription empty = parseSceneDescription("{}", "s.json");
+    CHECK_FALSE(empty.hasPose);
+    CHECK(empty.pointLights.empty());
+    // One camera key asks for all of them.
+    CHECK(errorOf(R"({"position":[0,0,0]})") == "s.json: missing key \"look_at\"");
+    CHECK(errorOf(R"({"fov_y":40})") == "s.json: missing key \"position\"");
+}
+
+TEST_CASE("scene description: a bad file is named with the problem") {
+    const std::string syntax = errorOf("{\n\"position\": [0,0,\n}");
+    CHECK(syntax.rfind("s.json: invalid JSON: parse error at line 3", 0) == 0);
+    CHECK(errorOf("[1, 2, 3]") == "s.json: expected a JSON object");
+    CHECK(errorOf(R"({"position":[0,0,"x"],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40})") ==
+          "s.json: \"position\" must be an array of 3 numbers");
+    CHECK(errorOf("{" + kPose + R"(,"width":-3})") == "s.json: \"width\" must be an integer in 1..65536");
+    CHECK(errorOf(R"({"height":0})") == "s.json: \"height\" must be an integer in 1..65536");
+    CHECK(errorOf(R"({"position":[0,0,0],"look_at":[0,0,0],"up":[0,1,0],"fov_y":40})") ==
+          "s.json: look_at must differ from position");
+    CHECK(errorOf(R"({"point_lights":[{"position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
+    CHECK(errorOf(R"({"point_lights":{}})") == "s.json: \"point_lights\" must be an array");
+    CHECK(errorOf(R"({"point_lights":[3]})") == "s.json: each of \"point_lights\" must be an object");
+}
+
+TEST_CASE("scene description: a light of an unknown type names the file and the type, and the known ones") {
+    CHECK(errorOf(R"({"lights":[{"type":"spot","position":[0,1,0],"intensity":[1,1,1]}]})") ==
+          "s.json: unknown light type 'spot' (known: point)");
+    CHECK(errorOf(R"({"lights":[{"position":[0,1,0],"intensity":[1,1,1]}]})") ==
+          "s.json: each of \"lights\" needs a \"type\" (known: point)");
+    CHECK(errorOf(R"({"lights":[{"type":7}]})") == "s.json: each of \"lights\" needs a \"type\" (known: point)");
+    CHECK(errorOf(R"({"lights":[{"type":"point","position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
+    CHECK(errorOf(R"({"lights":{"type":"point"}})") == "s.json: \"lights\" must be an array");
+    CHECK(errorOf(R"({"lights":["point"]})") == "s.json: each of \"lights\" must be an object");
+}
+
+TEST_CASE("scene description: a camera file must give the camera, and lends only its point_lights") {
+    const SceneDescription camera = parseCameraFile(
+        "{" + kPose + R"(,"width":8,"lights":[{"type":"point","position":[1,1,1],"intensity":[1,1,1]}],)"
+        R"("point_lights":[{"position":[2,2,2],"intensity":[3,3,3]}]})",
+        "cam.json");
+    CHECK(camera.hasPose);
+    CHECK(camera.camera.width == 8);
+    REQUIRE(camera.pointLights.size() == 1);
+    CHECK(camera.pointLights[0].position == glm::vec3(2, 2, 2));
+    CHECK_THROWS_WITH_AS(parseCameraFile(R"({"width":8})", "cam.json"),
+                         "cam.json: missing key \"position\"", Error);
+    // Its lights are not read, so a type only a later version knows is no error there.
+    CHECK_NOTHROW(parseCameraFile("{" + kPose + R"(,"lights":[{"type":"spot"}]})", "cam.json"));
+}
