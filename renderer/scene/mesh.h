@@ -12,11 +12,18 @@
 
 namespace strata {
 
+inline constexpr std::array<uint32_t, 3> kNoNormals{UINT32_MAX, UINT32_MAX, UINT32_MAX};
+
 struct MeshData {
     std::vector<glm::vec3> positions;
     // Vertex indices, counter-clockwise seen from the front.
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<uint32_t> triangleMaterials;  // one index into `materials` per triangle
+    // Shading normals (unit), interpolated across each triangle from its corners: per triangle,
+    // three indices into `normals` in the order of its vertices, or kNoNormals for a flat
+    // triangle. Empty: every triangle is flat (its geometric normal).
+    std::vector<glm::vec3> normals;
+    std::vector<std::array<uint32_t, 3>> triangleNormals;
     std::vector<Material> materials;
     std::vector<PointLight> pointLights;
 };
