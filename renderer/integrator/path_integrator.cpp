@@ -21,6 +21,17 @@ float powerHeuristic(float own, float other) {
 // segment is shortened by this fraction of its length (relative, so independent of scene scale).
 constexpr float kShadowRayShortening = 1e-4f;
 
+// Turns the geometric normal toward the viewer direction `toViewer`, and the shading normal onto
+// the geometric normal's side. When the viewer is below the shading hemisphere although above the
+// surface (vertex normals tilted away from it, seen at a grazing angle), the shading normal gives
+// way to the geometric one: its hemisphere would hold no direction toward the viewer, and the
+// surface would show a black rim.
+void orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
+    if (glm::dot(surface.normal, toViewer) < 0.0f) surface.normal = -surface.normal;
+    if (glm::dot(surface.shadingNormal, surface.normal) < 0.0f) surface.shadingNormal = -surface.shadingNormal;
+    if (!(glm::dot(surface.shadingNormal, toViewer) > 0.0f)) surface.shadingNormal = surface.normal;
+}
+
 }  // namespace
 
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
@@ -67,10 +78,11 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
 
         // Reflection is two-sided: the hemisphere is on the side the ray came from.
         SurfaceHit surface = scene_.surface(*hit);
-        if (glm::dot(surface.normal, ray.direction) > 0.0f) surface.normal = -surface.normal;
-        const Frame frame = Frame::fromNormal(surface.normal);
+        orientToward(surface, -ray.direction);
+        if (!(glm::dot(surface.normal, ray.direction) < 0.0f)) break;  // along the surface: nothing seen
+        // The strata, the BSDF's cosines and wo live in the shading frame.
+        const Frame frame = Frame::fromNormal(surface.shadingNormal);
         const glm::vec3 wo = frame.toLocal(-ray.direction);
-        if (!(wo.z > 0.0f)) break;  // a ray exactly along the surface sees nothing of it
         const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material);
         // Light that reaches the camera after this vertex's reflection counts as bounce + 1
         // bounces, which the depth allows here.
@@ -78,6 +90,10 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
             radiance += weight * lightSample(surface, frame, wo, bsdf, samples, bounce, rays);
         }
         const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce, bsdf, wo);
+        const glm::vec3 direction = frame.toWorld(sampled.local);
+        // A direction above the shading hemisphere but below the surface itself would leave
+        // through the back: it counts, with weight zero (the path ends).
+        if (!(glm::dot(direction, surface.normal) > 0.0f)) break;
         weight *= sampled.weight;
         if (isBlack(weight)) break;
         if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
@@ -86,7 +102,6 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
             weight /= survival;
         }
         previous = PreviousVertex{surface.point, sampled.pdf};
-        const glm::vec3 direction = frame.toWorld(sampled.local);
         ray = Ray{offsetRayOrigin(surface, direction), direction};
     }
     return radiance;
@@ -112,8 +127,10 @@ glm::vec3 PathIntegrator::lightSample(const SurfaceHit& surface, const Frame& fr
     const Light& light = scene_.lights().light(choice.light);
     const auto sample = light.sample(surface.point, {u.y, u.z});
     if (!sample) return glm::vec3(0.0f);
+    // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
+    if (!(glm::dot(sample->direction, surface.normal) > 0.0f)) return glm::vec3(0.0f);
     const glm::vec3 wi = frame.toLocal(sample->direction);
-    if (!(wi.z > 0.0f)) return glm::vec3(0.0f);  // behind the surface (or on it)
+    if (!(wi.z > 0.0f)) return glm::vec3(0.0f);
     const glm::vec3 f = bsdf.evaluate(wo, wi);
     if (isBlack(f)) return glm::vec3(0.0f);
     ++rays;

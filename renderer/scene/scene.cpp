@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -57,6 +58,9 @@ const MeshData& validated(const MeshData& mesh) {
     if (mesh.triangleMaterials.size() != mesh.triangles.size()) {
         throw Error("the scene needs one material per triangle");
     }
+    if (!mesh.triangleNormals.empty() && mesh.triangleNormals.size() != mesh.triangles.size()) {
+        throw Error("the scene needs normal indices for every triangle or none");
+    }
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
         for (uint32_t index : mesh.triangles[i]) {
             if (index >= mesh.positions.size()) throw Error("a triangle's vertex index is out of range");
@@ -64,13 +68,39 @@ const MeshData& validated(const MeshData& mesh) {
         if (mesh.triangleMaterials[i] >= mesh.materials.size()) {
             throw Error("a triangle's material index is out of range");
         }
+        if (!mesh.triangleNormals.empty() && mesh.triangleNormals[i] != kNoNormals) {
+            for (uint32_t index : mesh.triangleNormals[i]) {
+                if (index >= mesh.normals.size()) throw Error("a triangle's normal index is out of range");
+            }
+        }
+    }
+    return mesh;
+}
+
+// Turns over every triangle whose counter-clockwise normal points away from the mean of its
+// vertex normals: loaders disagree on winding more often than on normals, and one-sided emission
+// and the side a direction is on must agree with the shading.
+MeshData& orientedToNormals(MeshData& mesh) {
+    for (size_t i = 0; i < mesh.triangleNormals.size(); ++i) {
+        auto& corners = mesh.triangleNormals[i];
+        if (corners == kNoNormals) continue;
+        auto& tri = mesh.triangles[i];
+        const glm::vec3 winding = glm::cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
+                                             mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+        const glm::vec3 shading = mesh.normals[corners[0]] + mesh.normals[corners[1]] + mesh.normals[corners[2]];
+        if (glm::dot(winding, shading) < 0.0f) {
+            std::swap(tri[1], tri[2]);
+            std::swap(corners[1], corners[2]);
+        }
     }
     return mesh;
 }
 }  // namespace
 
 Scene::Scene(MeshData mesh)
-    : mesh_(std::move(mesh)), materials_(validated(mesh_).materials), lights_(mesh_) {
+    : mesh_(std::move(mesh)),
+      materials_(validated(mesh_).materials),
+      lights_(orientedToNormals(mesh_)) {
     boundsMin_ = glm::vec3(std::numeric_limits<float>::infinity());
     boundsMax_ = -boundsMin_;
     for (const auto& p : mesh_.positions) {
@@ -186,6 +216,15 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     hit.normal.x = normal.x;
     hit.normal.y = normal.y;
     hit.normal.z = normal.z;
+    hit.shadingNormal = hit.normal;
+    if (!mesh_.triangleNormals.empty() && mesh_.triangleNormals[triangle] != kNoNormals) {
+        const auto& corners = mesh_.triangleNormals[triangle];
+        const glm::vec3 interpolated = b0 * mesh_.normals[corners[0]] + b1 * mesh_.normals[corners[1]] +
+                                       b2 * mesh_.normals[corners[2]];
+        const float length = glm::length(interpolated);
+        // Opposed vertex normals can cancel; the geometric normal is the only sensible answer.
+        if (length > 1e-6f) hit.shadingNormal = interpolated / length;
+    }
     hit.triangle = triangle;
     return hit;
 }

@@ -30,9 +30,10 @@ struct RayHit {
 };
 
 struct SurfaceHit {
-    glm::vec3 point;       // on the triangle, from barycentrics (not origin + t * direction)
-    glm::vec3 pointError;  // per axis: how far a new ray's origin must clear the surface
-    glm::vec3 normal;      // unit geometric normal, counter-clockwise = front
+    glm::vec3 point;          // on the triangle, from barycentrics (not origin + t * direction)
+    glm::vec3 pointError;     // per axis: how far a new ray's origin must clear the surface
+    glm::vec3 normal;         // unit geometric normal, counter-clockwise = front
+    glm::vec3 shadingNormal;  // unit, interpolated from the vertex normals; `normal` when flat
     uint32_t triangle;
 };
 
@@ -46,7 +47,9 @@ struct SceneSummary {
 
 class Scene {
 public:
-    // Throws strata::Error if the mesh has no triangles or an index is out of range.
+    // Throws strata::Error if the mesh has no triangles or an index is out of range. A triangle
+    // whose winding disagrees with its vertex normals is turned over, so that its front (the side
+    // it emits from) is the side its normals show.
     explicit Scene(MeshData mesh);
     ~Scene();
     Scene(Scene&& other) noexcept;
