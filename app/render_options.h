@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 #include <CLI/App.hpp>
 
 #include "scene/camera.h"
@@ -25,6 +26,9 @@ struct RenderOptions {
     int threads = 0;
     bool nee = false;
     int rouletteDepth = -1;
+    std::string env;               // --env FILE.exr or "none"; empty: the default rule
+    std::vector<float> envColor;   // --env-color R G B
+    float envRotate = 0.0f;        // --env-rotate, degrees about +y
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);
@@ -33,6 +37,11 @@ struct RenderOptions {
     RenderSettings renderSettings(const LoadedScene& loaded) const;
     // Reads the scene's files (OBJ, MTL, camera JSON) without parsing them.
     SceneFiles readSceneFiles() const;
+    // The environment the options give (lights/environment.h), its map read and checked; throws
+    // strata::Error naming the option or the file.
+    Environment environment() const;
+    // Builds the scene from its files under environment().
+    LoadedScene parseScene(const SceneFiles& files) const;
     // Loads the scene and camera: parseScene(readSceneFiles()).
     LoadedScene loadScene() const;
     // The camera; width/height options override the camera file.

@@ -1,12 +1,13 @@
 #pragma once
 // A scene as loaders give it: geometry, materials and the lights that are not emitting triangles
-// (what the OBJ loader produces and what tests build by hand).
+// (what the OBJ loader produces and what tests build by hand), and what rays leaving it see.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "lights/environment.h"
 #include "lights/point_light.h"
 #include "materials/material.h"
 
@@ -19,6 +20,7 @@ struct MeshData {
     std::vector<uint32_t> triangleMaterials;  // one index into `materials` per triangle
     std::vector<Material> materials;
     std::vector<PointLight> pointLights;
+    Environment environment;
 };
 
 }  // namespace strata

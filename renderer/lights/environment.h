@@ -1,0 +1,44 @@
+#pragma once
+// What a ray that leaves the scene sees, as a scene is given it (MeshData::environment), and the
+// light at infinity it becomes: none, a uniform radiance (uniform_environment_light.h) or a
+// latitude-longitude HDR map (environment_map_light.h).
+//
+// The default rule: a scene given no environment and holding no light at all (no Ke, no point
+// light) is lit by a uniform environment of radiance 1, under which a diffuse surface that sees
+// only the sky shows its albedo (notes section 5.3); a scene with lights stays dark outside.
+#include <filesystem>
+#include <memory>
+#include <glm/vec3.hpp>
+
+#include "lights/light.h"
+
+namespace strata {
+
+struct Image;
+
+struct Environment {
+    enum class Kind { Default, None, Uniform, Map };
+    Kind kind = Kind::Default;           // Default: by the rule above
+    glm::vec3 radiance{1.0f};            // Uniform: from every direction
+    std::shared_ptr<const Image> map;    // Map: as readEnvironmentMap gives it
+    float rotationDegrees = 0.0f;        // Map: turned about the up axis +y
+};
+
+// What a scene says on stderr when the default rule lights it.
+inline constexpr const char* kDefaultEnvironmentNote =
+    "the scene has no light; lighting it with a uniform white environment (--env none for black)";
+
+// The environment after the default rule, given whether the scene has any other light; a black
+// uniform environment becomes none.
+Environment resolveEnvironment(const Environment& given, bool sceneHasLights);
+// The largest radiance component the environment sends (for the truncation bound's Le_max).
+float maxRadiance(const Environment& environment);
+// The light of a resolved environment, or nullptr for none. `sceneRadius` is the radius of the
+// scene's bounding sphere, which the light's power needs (light.h).
+std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float sceneRadius);
+
+// Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
+// finite and >= 0. Throws strata::Error naming the file otherwise.
+Image readEnvironmentMap(const std::filesystem::path& path);
+
+}  // namespace strata
