@@ -91,7 +91,12 @@ Environment RenderOptions::environment() const {
         environment.kind = Environment::Kind::None;
     } else if (!env.empty()) {
         environment.kind = Environment::Kind::Map;
-        environment.map = std::make_shared<const Image>(readEnvironmentMap(env));
+        const EnvironmentMapFile file = readEnvironmentMap(env);
+        if (file.zeroedNegatives > 0) {
+            std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
+                         env.c_str(), file.zeroedNegatives);
+        }
+        environment.map = file.map;
         environment.rotationDegrees = envRotate;
     }
     return environment;

@@ -54,22 +54,35 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
     return nullptr;
 }
 
-Image readEnvironmentMap(const std::filesystem::path& path) {
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
     Image map = readExr(path);
     if (map.width != 2 * map.height) {
         throw Error(path.string() + ": an environment map must be a latitude-longitude image twice as "
                     "wide as high, got " + std::to_string(map.width) + "x" + std::to_string(map.height));
     }
+    const auto refuse = [&](size_t i, const char* what) {
+        throw Error(path.string() + ": texel (" + std::to_string(i % map.width) + ", " +
+                    std::to_string(i / map.width) + ") is " + what + "; an environment map holds radiances");
+    };
+    double sum = 0.0;
     for (size_t i = 0; i < map.pixels.size(); ++i) {
         const glm::vec3& texel = map.pixels[i];
+        if (!(std::isfinite(texel.x) && std::isfinite(texel.y) && std::isfinite(texel.z))) refuse(i, "not finite");
+        sum += static_cast<double>(texel.x) + texel.y + texel.z;
+    }
+    const double floor = -kNegativeNoise * sum / (3.0 * static_cast<double>(map.pixels.size()));
+    EnvironmentMapFile file;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
-            if (std::isfinite(texel[c]) && texel[c] >= 0.0f) continue;
-            throw Error(path.string() + ": texel (" + std::to_string(i % map.width) + ", " +
-                        std::to_string(i / map.width) + ") is negative or not finite; an "
-                        "environment map holds radiances");
+            float& value = map.pixels[i][c];
+            if (value >= 0.0f) continue;
+            if (value < floor) refuse(i, "negative beyond lossy-compression noise");
+            value = 0.0f;
+            ++file.zeroedNegatives;
         }
     }
-    return map;
+    file.map = std::make_shared<const Image>(std::move(map));
+    return file;
 }
 
 }  // namespace strata

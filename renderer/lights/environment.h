@@ -37,8 +37,17 @@ float maxRadiance(const Environment& environment);
 // scene's bounding sphere, which the light's power needs (light.h).
 std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float sceneRadius);
 
+// A map as read, with the count of slightly negative texel components read as 0.
+struct EnvironmentMapFile {
+    std::shared_ptr<const Image> map;
+    size_t zeroedNegatives = 0;
+};
 // Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
-// finite and >= 0. Throws strata::Error naming the file otherwise.
-Image readEnvironmentMap(const std::filesystem::path& path);
+// finite and >= 0. Lossily compressed EXRs (DWAA/DWAB, as Blender's bundled maps are) ring
+// slightly below 0 beside bright texels, down to about 3% of the map's mean radiance: components
+// down to kNegativeNoise times the mean are read as 0. Throws strata::Error naming the file for
+// any other image: not 2:1, a texel more negative than that, or one not finite.
+inline constexpr float kNegativeNoise = 0.05f;
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
 
 }  // namespace strata

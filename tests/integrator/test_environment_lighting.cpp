@@ -185,7 +185,7 @@ TEST_CASE("environment: a map with one small bright region, with and without nex
     mesh.materials = {diffuse(glm::vec3(kAlbedo))};
     test::addQuad(mesh, {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, 0);
     mesh.environment.kind = Environment::Kind::Map;
-    mesh.environment.map = std::make_shared<const Image>(readEnvironmentMap(dir / "bright.exr"));
+    mesh.environment.map = readEnvironmentMap(dir / "bright.exr").map;
     mesh.environment.rotationDegrees = 70.0f;  // the irradiance of a horizontal plane ignores it
     const Scene scene(std::move(mesh));
     const Ray ray{{0.2f, 1.0f, 0.1f}, glm::normalize(glm::vec3(-0.2f, -1.0f, -0.1f))};
