@@ -71,7 +71,7 @@ TEST_CASE("piecewise constant 2d: samples follow pdf(), zero cells never sampled
     CHECK(chiSquare < test::chiSquareCritical(degrees - 1));
 }
 
-TEST_CASE("piecewise constant 2d: the ends of [0,1) stay inside cells of positive weight") {
+TEST_CASE("piecewise constant 2d: inputs 0 and 1 - ulp stay inside cells of positive weight") {
     const PiecewiseConstant2D distribution({0.0f, 2.0f, 0.0f, 0.0f, 0.0f, 0.0f}, 3, 2);
     for (float u : {0.0f, 0.5f, 1.0f - 0x1p-24f}) {
         for (float v : {0.0f, 0.5f, 1.0f - 0x1p-24f}) {
