@@ -2,11 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <memory>
 
 #include "util/error.h"
 #include "integrator/truncation.h"
-#include "io/image_io.h"
 
 namespace strata {
 

@@ -31,8 +31,9 @@ double truncationBound(int depth, double maxAlbedo, double maxEmission);
 double maxEmittedRadiance(const Scene& scene);
 
 // K_eps for a loaded scene, from its summary's largest albedo and maxEmittedRadiance: what
-// `--epsilon` and the viewer's epsilon control use. Throws strata::Error saying why no finite depth bounds the
-// error: point lights (a delta light has no radiance bound) or a largest albedo >= 1.
+// `--epsilon` and the viewer's epsilon control use. Throws strata::Error saying why no finite
+// depth bounds the error: point lights (a delta light has no radiance bound) or a largest
+// albedo >= 1.
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene);
 
 }  // namespace strata

@@ -6,6 +6,7 @@
 // The default rule: a scene given no environment and holding no light at all (no Ke, no point
 // light) is lit by a uniform environment of radiance 1, under which a diffuse surface that sees
 // only the sky shows its albedo (notes section 5.3); a scene with lights stays dark outside.
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <glm/vec3.hpp>
@@ -37,17 +38,19 @@ float maxRadiance(const Environment& environment);
 // scene's bounding sphere, which the light's power needs (light.h).
 std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float sceneRadius);
 
+// Lossily compressed EXRs (DWAA/DWAB, as Blender's bundled maps are) ring slightly below 0 beside
+// bright texels, down to about 3% of the map's mean radiance in the maps measured: components down
+// to this fraction of the mean, negated, are that noise.
+inline constexpr float kNegativeNoise = 0.05f;
+
 // A map as read, with the count of slightly negative texel components read as 0.
 struct EnvironmentMapFile {
     std::shared_ptr<const Image> map;
     size_t zeroedNegatives = 0;
 };
 // Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
-// finite and >= 0. Lossily compressed EXRs (DWAA/DWAB, as Blender's bundled maps are) ring
-// slightly below 0 beside bright texels, down to about 3% of the map's mean radiance: components
-// down to kNegativeNoise times the mean are read as 0. Throws strata::Error naming the file for
-// any other image: not 2:1, a texel more negative than that, or one not finite.
-inline constexpr float kNegativeNoise = 0.05f;
+// finite and >= 0, lossy-compression noise read as 0. Throws strata::Error naming the file for
+// any other image: not 2:1, a texel more negative than that noise, or one not finite.
 EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
 
 }  // namespace strata

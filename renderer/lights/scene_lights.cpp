@@ -1,6 +1,5 @@
 #include "lights/scene_lights.h"
 
-#include <algorithm>
 #include <limits>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
