@@ -53,12 +53,13 @@ void RenderCommand::run() const {
     RenderJob job;
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
-    const LoadedScene loaded = job.collectively([&] { return parseScene(std::move(files)); });
+    const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
         std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
+        if (loaded.scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
                          "note: the scene's point lights need --nee; without it they are dark\n");

@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "util/error.h"
@@ -26,8 +27,17 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
                        "Russian roulette from this bounce on, survival by path weight (-1: off)")
         ->capture_default_str();
     command.add_flag("--nee", nee,
-                     "Next-event estimation: sample emitting triangles (MIS with the sampler) "
-                     "and point lights (reached only this way)");
+                     "Next-event estimation: sample emitting triangles and the environment (MIS "
+                     "with the sampler) and point lights (reached only this way)");
+    auto* envOption = command.add_option(
+        "--env", env,
+        "Environment seen by rays leaving the scene: a latitude-longitude EXR (2:1, +y up) or "
+        "'none' (default: none, or uniform white for a scene with no light)");
+    command.add_option("--env-color", envColor, "Uniform environment of radiance R G B")
+        ->expected(3)
+        ->excludes(envOption);
+    command.add_option("--env-rotate", envRotate, "Turn the environment map about +y (degrees)")
+        ->capture_default_str();
 }
 
 RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
@@ -45,10 +55,10 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
         } catch (const Error& e) {
             throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
-        const SceneSummary& summary = loaded.scene.summary();
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
-                     choice.depth, *epsilon, choice.bound, summary.maxAlbedo, summary.maxEmission);
+                     choice.depth, *epsilon, choice.bound, loaded.scene.summary().maxAlbedo,
+                     maxEmittedRadiance(loaded.scene));
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
@@ -63,6 +73,38 @@ SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
     return strata::readSceneBundle(scene, cameraPath);
+}
+
+Environment RenderOptions::environment() const {
+    if (!std::isfinite(envRotate)) throw Error("--env-rotate: must be a finite angle in degrees");
+    Environment environment;
+    if (!envColor.empty()) {
+        for (float c : envColor) {
+            if (!(std::isfinite(c) && c >= 0.0f)) {
+                throw Error("--env-color: must be three finite radiances >= 0");
+            }
+        }
+        environment.kind = Environment::Kind::Uniform;
+        environment.radiance = glm::vec3(envColor[0], envColor[1], envColor[2]);
+    } else if (env == "none") {
+        environment.kind = Environment::Kind::None;
+    } else if (!env.empty()) {
+        environment.kind = Environment::Kind::Map;
+        const EnvironmentMapFile file = readEnvironmentMap(env);
+        if (file.zeroedNegatives > 0) {
+            std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
+                         env.c_str(), file.zeroedNegatives);
+        }
+        environment.map = file.map;
+        environment.rotationDegrees = envRotate;
+    }
+    return environment;
+}
+
+LoadedScene RenderOptions::parseScene(SceneBundle files) const {
+    LoadedScene loaded = strata::parseScene(std::move(files));
+    loaded.scene.setEnvironment(environment());
+    return loaded;
 }
 
 LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }

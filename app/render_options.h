@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 #include <CLI/App.hpp>
 
 #include "scene/camera.h"
@@ -25,6 +26,9 @@ struct RenderOptions {
     int threads = 0;
     bool nee = false;
     int rouletteDepth = -1;
+    std::string env;               // --env FILE.exr or "none"; empty: the default rule
+    std::vector<float> envColor;   // --env-color R G B
+    float envRotate = 0.0f;        // --env-rotate, degrees about +y
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);
@@ -34,6 +38,11 @@ struct RenderOptions {
     // Reads the scene's files (the scene file and those it names, its description, the camera
     // file) without parsing them.
     SceneBundle readSceneBundle() const;
+    // The environment the options give (lights/environment.h), its map read and checked; throws
+    // strata::Error naming the option or the file.
+    Environment environment() const;
+    // Builds the scene from its files under environment().
+    LoadedScene parseScene(SceneBundle files) const;
     // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;
     // The camera; width/height options override the camera file.

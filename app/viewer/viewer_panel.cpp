@@ -96,10 +96,10 @@ void ViewerPanel::truncationControls(ViewerSettings& settings, const Scene& scen
         const SceneSummary& summary = scene.summary();
         if (depth < choice.depth) {
             ImGui::TextWrapped("K_eps = %d is beyond the viewer's %d: rendering at %d, bound %.2e", choice.depth,
-                               kMaxDepth, depth, truncationBound(depth, summary.maxAlbedo, summary.maxEmission));
+                               kMaxDepth, depth, truncationBound(depth, summary.maxAlbedo, maxEmittedRadiance(scene)));
         } else {
             ImGui::TextWrapped("K_eps = %d, bound %.2e (max albedo %.3g, max Le %.3g)", choice.depth, choice.bound,
-                               static_cast<double>(summary.maxAlbedo), static_cast<double>(summary.maxEmission));
+                               static_cast<double>(summary.maxAlbedo), maxEmittedRadiance(scene));
         }
     } catch (const std::exception& e) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.2f, 1));

@@ -41,7 +41,7 @@ PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings&
 
 std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
     const SceneLights& lights = scene.lights();
-    if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights)";
+    if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights, no environment)";
     if (lights.deltaLights() < lights.size()) return std::nullopt;
     if (!settings.nextEventEstimation) return "its only lights are point lights, which need --nee";
     if (settings.depth == 0) return "its only lights are point lights, which depth 0 never reaches";

@@ -1,5 +1,6 @@
 #include "integrator/truncation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -29,10 +30,16 @@ std::optional<TruncationChoice> chooseTruncationDepth(double epsilon, double max
     return TruncationChoice{depth, truncationBound(depth, maxAlbedo, maxEmission)};
 }
 
+double maxEmittedRadiance(const Scene& scene) {
+    // The environment is an emitter at infinity that reflects nothing, so the bound of notes
+    // section 5.5 holds with its radiance in Le_max.
+    return std::max<double>(scene.summary().maxEmission, scene.lights().maxRadianceAtInfinity());
+}
+
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene) {
     if (!scene.mesh().pointLights.empty()) throw Error("point lights have no radiance bound");
     const SceneSummary& summary = scene.summary();
-    const auto choice = chooseTruncationDepth(epsilon, summary.maxAlbedo, summary.maxEmission);
+    const auto choice = chooseTruncationDepth(epsilon, summary.maxAlbedo, maxEmittedRadiance(scene));
     if (!choice) {
         char reason[160];
         std::snprintf(reason, sizeof reason,

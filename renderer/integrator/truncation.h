@@ -27,9 +27,13 @@ std::optional<TruncationChoice> chooseTruncationDepth(double epsilon, double max
 // The bound Le_max a^(K+1) / (1 - a) for a given depth (a < 1).
 double truncationBound(int depth, double maxAlbedo, double maxEmission);
 
-// K_eps for a loaded scene, from its summary's largest albedo and emission: what `--epsilon` and
-// the viewer's epsilon control use. Throws strata::Error saying why no finite depth bounds the
-// error: point lights (a delta light has no radiance bound) or a largest albedo >= 1.
+// Le_max of a scene: the largest Ke component in use or the environment's largest radiance.
+double maxEmittedRadiance(const Scene& scene);
+
+// K_eps for a loaded scene, from its summary's largest albedo and maxEmittedRadiance: what
+// `--epsilon` and the viewer's epsilon control use. Throws strata::Error saying why no finite
+// depth bounds the error: point lights (a delta light has no radiance bound) or a largest
+// albedo >= 1.
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene);
 
 }  // namespace strata

@@ -3,7 +3,7 @@
 // them (light_sampler.h). The integrator asks it for a light sample at each scattering vertex,
 // for the light a ray found on a triangle, and for what arrives along a ray that left the scene;
 // it knows no light by its kind. A new kind of light is a file in this folder and one line in
-// SceneLights' constructor.
+// SceneLights' constructor. The default environment rule (environment.h) is applied here, once.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -16,7 +16,8 @@ namespace strata {
 
 class SceneLights {
 public:
-    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights.
+    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights,
+    // then the environment (after the default rule).
     explicit SceneLights(const MeshData& mesh);
 
     size_t size() const { return lights_.size(); }
@@ -25,9 +26,13 @@ public:
 
     // The light on `triangle`, or -1 when it emits nothing.
     int32_t lightOnTriangle(uint32_t triangle) const { return triangleLight_[triangle]; }
-    // The lights a ray that leaves the scene receives radiance from (none until the scene has an
-    // environment).
+    // The lights a ray that leaves the scene receives radiance from: the environment, if any.
     const std::vector<uint32_t>& lightsAtInfinity() const { return atInfinity_; }
+    // The largest radiance component arriving from outside the scene (0 without an environment).
+    float maxRadianceAtInfinity() const { return maxRadianceAtInfinity_; }
+    // Whether the scene, having no light of its own and no environment given, is lit by the
+    // default uniform white environment (environment.h).
+    bool litByDefault() const { return litByDefault_; }
     // The delta lights (point lights), which next-event estimation alone reaches.
     size_t deltaLights() const { return deltaLights_; }
 
@@ -38,6 +43,8 @@ private:
     std::vector<int32_t> triangleLight_;
     std::vector<uint32_t> atInfinity_;
     size_t deltaLights_ = 0;
+    float maxRadianceAtInfinity_ = 0.0f;
+    bool litByDefault_ = false;
     LightSampler sampler_;
 };
 

@@ -13,6 +13,13 @@ glm::vec3 sampleUniformHemisphere(glm::vec2 u) {
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+glm::vec3 sampleUniformSphere(glm::vec2 u) {
+    const float z = 1.0f - 2.0f * u.x;
+    const float r = std::sqrt(std::max(0.0f, (1.0f - z) * (1.0f + z)));
+    const float phi = 2.0f * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
 glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
     const float a = 2.0f * u.x - 1.0f;
     const float b = 2.0f * u.y - 1.0f;

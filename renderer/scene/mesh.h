@@ -1,12 +1,14 @@
 #pragma once
 // A scene as loaders give it: geometry, materials and the lights that are not emitting triangles
-// (what a scene format's loader produces, scene_format.h, and what tests build by hand).
+// (what a scene format's loader produces, scene_format.h, and what tests build by hand), and what
+// rays leaving it see.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "lights/environment.h"
 #include "lights/point_light.h"
 #include "materials/material.h"
 
@@ -26,6 +28,7 @@ struct MeshData {
     std::vector<std::array<uint32_t, 3>> triangleNormals;
     std::vector<Material> materials;
     std::vector<PointLight> pointLights;
+    Environment environment;
 };
 
 }  // namespace strata

@@ -164,6 +164,11 @@ Scene::Scene(Scene&& other) noexcept
     other.rtcScene_ = nullptr;
 }
 
+void Scene::setEnvironment(Environment environment) {
+    mesh_.environment = std::move(environment);
+    lights_ = SceneLights(mesh_);
+}
+
 std::optional<RayHit> Scene::intersect(const Ray& ray) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

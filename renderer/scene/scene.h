@@ -57,6 +57,10 @@ public:
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
+    // Replaces what rays that leave the scene see, and with it the lights; the triangles keep
+    // their lights' indices, since the environment is registered after them (scene_lights.h).
+    void setEnvironment(Environment environment);
+
     std::optional<RayHit> intersect(const Ray& ray) const;
     // The surface record at a hit.
     SurfaceHit surface(const RayHit& hit) const;

@@ -3,6 +3,8 @@
 // untouched. The same table is the README's reliability section.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -137,6 +139,15 @@ const std::vector<BadInputCase> kCliCases = {
     {"render --out into a missing folder", {}, "render {dir}/s.obj --spp 24 --out {dir}/no/such/dir.exr",
      "dir.exr: cannot write"},
     {"render unknown option", {}, "render {dir}/s.obj --frobnicate", "--frobnicate"},
+    // Environment options (the maps' own checks: "environment maps" below)
+    {"--env map missing", {}, "render {dir}/s.obj --env {dir}/sky.exr", "sky.exr: no such EXR file"},
+    {"--env map not an EXR", {{"sky.exr", "not an image\n"}}, "render {dir}/s.obj --env {dir}/sky.exr",
+     "sky.exr: not a readable EXR file"},
+    {"--env-color negative", {}, "render {dir}/s.obj --env-color 1 -1 1",
+     "--env-color: must be three finite radiances >= 0"},
+    {"--env-color of two numbers", {}, "render {dir}/s.obj --env-color 1 1", "--env-color"},
+    {"--env with --env-color", {}, "render {dir}/s.obj --env none --env-color 1 1 1", "--env excludes --env-color"},
+    {"--env-rotate not finite", {}, "render {dir}/s.obj --env-rotate inf", "--env-rotate: must be a finite angle"},
     {"unknown subcommand", {}, "paint", "unknown command 'paint'"},
     // strata samples options
     {"samples --passes 0", {}, "samples --passes 0", "--passes: must be in 1..1000000"},
@@ -261,4 +272,39 @@ TEST_CASE("bad input: EXR references that are missing, empty, not EXR or truncat
     }
     CHECK(readExr(dir / "good.exr").pixels[63] == glm::vec3(0.25f));
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bad input: environment maps that are not 2:1 or hold negative or non-finite texels are refused") {
+    const auto dir = test::scratchDir("bad-environment");
+    std::ofstream(dir / "s.obj") << kObj;
+    std::ofstream(dir / "s.mtl") << kMtl;
+    std::ofstream(dir / "s.json") << kCamera;
+    Image good{8, 4, std::vector<glm::vec3>(32, glm::vec3(0.5f))};
+    writeImage(dir / "good.exr", good);
+    writeImage(dir / "square.exr", Image{4, 4, std::vector<glm::vec3>(16, glm::vec3(0.5f))});
+    Image negative = good;
+    negative.pixels[9].y = -0.5f;
+    writeImage(dir / "negative.exr", negative);
+    Image nan = good;
+    nan.pixels[31].x = NAN;
+    writeImage(dir / "nan.exr", nan);
+    const struct {
+        const char* file;
+        const char* expected;
+    } cases[] = {{"square.exr", "square.exr: an environment map must be a latitude-longitude image twice as wide as high, got 4x4"},
+                 {"negative.exr", "negative.exr: texel (1, 1) is negative beyond lossy-compression noise"},
+                 {"nan.exr", "nan.exr: texel (7, 3) is not finite"}};
+    const std::string scene = (dir / "s.obj").string();
+    for (const auto& c : cases) {
+        CAPTURE(c.file);
+        const auto result = test::runStrata("render " + scene + " --spp 24 --env " + (dir / c.file).string());
+        CAPTURE(result.err);
+        CHECK(result.exitCode == 1);
+        CHECK(result.err.rfind("strata: ", 0) == 0);
+        CHECK(result.err.find(c.expected) != std::string::npos);
+        CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+    }
+    const auto lit = test::runStrata("render " + scene + " --spp 24 --env " + (dir / "good.exr").string());
+    CAPTURE(lit.err);
+    CHECK(lit.exitCode == 0);
 }

@@ -132,16 +132,36 @@ TEST_CASE("cli: samples prints one CSV line per sample, every stratum once per p
 TEST_CASE("cli: a scene that cannot be lit renders black at once and says why") {
     const auto dir = test::scratchDir("cli-dark");
     std::ofstream(dir / "dark.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    const auto result = test::runStrata("render " + (dir / "dark.obj").string() + " --spp 48 --json");
+    const auto result = test::runStrata("render " + (dir / "dark.obj").string() + " --env none --spp 48 --json");
     REQUIRE(result.exitCode == 0);
     const auto report = nlohmann::json::parse(result.out);
     CHECK(report["black_early_out"] == true);
     CHECK(report["paths"] == 0);
     CHECK(result.err.find("no emitter") != std::string::npos);
     const auto forced = test::runStrata("render " + (dir / "dark.obj").string() +
-                                        " --spp 24 --no-early-out --width 8 --height 8 --json");
+                                        " --env none --spp 24 --no-early-out --width 8 --height 8 --json");
     REQUIRE(forced.exitCode == 0);
     CHECK(nlohmann::json::parse(forced.out)["paths"] == 24 * 64);
+}
+
+TEST_CASE("cli: a scene with no light is lit by a white sky, and says so; --env-color sets its radiance") {
+    const auto dir = test::scratchDir("cli-default-sky");
+    // A square of albedo 0.5 filling the view: under a sky of 1 every pixel reads 0.5.
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20})";
+    const std::string render = "render " + (dir / "grey.obj").string() +
+                               " --sampler cosine --depth 2 --spp 24 --width 4 --height 4 --json";
+    const auto lit = test::runStrata(render);
+    REQUIRE(lit.exitCode == 0);
+    CHECK(lit.err.find("note: the scene has no light; lighting it with a uniform white environment "
+                       "(--env none for black)") != std::string::npos);
+    const auto mean = nlohmann::json::parse(lit.out)["mean_rgb"];
+    CHECK(mean[1].get<double>() == doctest::Approx(0.5).epsilon(1e-6));
+    const auto coloured = test::runStrata(render + " --env-color 2 4 0");
+    REQUIRE(coloured.exitCode == 0);
+    CHECK(coloured.err.find("note: the scene has no light") == std::string::npos);
+    CHECK(nlohmann::json::parse(coloured.out)["mean_rgb"][1].get<double>() == doctest::Approx(2.0).epsilon(1e-6));
 }
 
 TEST_CASE("cli: --epsilon picks the depth from the truncation bound") {

@@ -58,6 +58,7 @@ TEST_CASE("early out: a scene without reachable light is recognised as black") {
     MeshData mesh;
     mesh.materials = {Material{"grey", glm::vec3(0.5f), glm::vec3(0.0f)}};
     test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
+    mesh.environment.kind = Environment::Kind::None;  // else the default white sky lights it
     const Scene dark(mesh);
     CHECK(whyBlack(dark, {3, SamplerKind::Strata24, true}).has_value());
     mesh.pointLights = {PointLight{{0.5f, 0.5f, 1.0f}, glm::vec3(1.0f)}};

@@ -39,13 +39,37 @@ TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") 
     CHECK(lights.light(4).isDelta());
 }
 
-TEST_CASE("scene lights: a scene without emitters has none") {
+TEST_CASE("scene lights: a scene without emitters gets the default sky, or none with --env none") {
     Material dark;
     dark.diffuse = glm::vec3(0.5f);
     MeshData mesh;
     mesh.materials = {dark};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
+    test::addQuad(mesh, {0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, 0);
+    const SceneLights lit(mesh);
+    REQUIRE(lit.size() == 1);
+    CHECK(lit.litByDefault());
+    CHECK(lit.lightsAtInfinity() == std::vector<uint32_t>{0});
+    CHECK(lit.maxRadianceAtInfinity() == 1.0f);
+    // Radiance 1 through the bounding sphere of radius 5/2: pi r^2 4 pi.
+    CHECK(lit.light(0).power().x == doctest::Approx(kPi * 6.25f * 4.0f * kPi));
+    mesh.environment.kind = Environment::Kind::None;
     const SceneLights lights(mesh);
     CHECK(lights.size() == 0);
     CHECK(lights.sampler().empty());
+    CHECK_FALSE(lights.litByDefault());
+}
+
+TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
+    Material lamp;
+    lamp.emission = glm::vec3(2.0f);
+    MeshData mesh;
+    mesh.materials = {lamp};
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // power 2 pi, radius 1/sqrt 2
+    mesh.environment.kind = Environment::Kind::Uniform;
+    mesh.environment.radiance = glm::vec3(1.0f / kPi);                   // power pi (1/2) 4 pi / pi = 2 pi
+    const SceneLights lights(mesh);
+    REQUIRE(lights.size() == 3);
+    CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
+    CHECK_FALSE(lights.litByDefault());
+    CHECK(lights.sampler().probability(2) == doctest::Approx(0.5f));
 }

@@ -1,0 +1,88 @@
+#include "lights/environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "io/image_io.h"
+#include "lights/environment_map_light.h"
+#include "lights/uniform_environment_light.h"
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+float maxComponent(const glm::vec3& v) { return std::max(std::max(v.x, v.y), v.z); }
+
+}  // namespace
+
+Environment resolveEnvironment(const Environment& given, bool sceneHasLights) {
+    Environment resolved = given;
+    if (given.kind == Environment::Kind::Default) {
+        resolved.kind = sceneHasLights ? Environment::Kind::None : Environment::Kind::Uniform;
+        resolved.radiance = glm::vec3(1.0f);
+    }
+    if (resolved.kind == Environment::Kind::Uniform && !(maxComponent(resolved.radiance) > 0.0f)) {
+        resolved.kind = Environment::Kind::None;
+    }
+    return resolved;
+}
+
+float maxRadiance(const Environment& environment) {
+    switch (environment.kind) {
+        case Environment::Kind::Uniform: return maxComponent(environment.radiance);
+        case Environment::Kind::Map: {
+            float largest = 0.0f;
+            for (const glm::vec3& texel : environment.map->pixels) largest = std::max(largest, maxComponent(texel));
+            return largest;
+        }
+        case Environment::Kind::Default:
+        case Environment::Kind::None: break;
+    }
+    return 0.0f;
+}
+
+std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float sceneRadius) {
+    switch (resolved.kind) {
+        case Environment::Kind::Uniform:
+            return std::make_unique<UniformEnvironmentLight>(resolved.radiance, sceneRadius);
+        case Environment::Kind::Map:
+            return std::make_unique<EnvironmentMapLight>(resolved.map, resolved.rotationDegrees, sceneRadius);
+        case Environment::Kind::Default:
+        case Environment::Kind::None: break;
+    }
+    return nullptr;
+}
+
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
+    Image map = readExr(path);
+    if (map.width != 2 * map.height) {
+        throw Error(path.string() + ": an environment map must be a latitude-longitude image twice as "
+                    "wide as high, got " + std::to_string(map.width) + "x" + std::to_string(map.height));
+    }
+    const auto refuse = [&](size_t i, const char* what) {
+        throw Error(path.string() + ": texel (" + std::to_string(i % map.width) + ", " +
+                    std::to_string(i / map.width) + ") is " + what + "; an environment map holds radiances");
+    };
+    double sum = 0.0;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
+        const glm::vec3& texel = map.pixels[i];
+        if (!(std::isfinite(texel.x) && std::isfinite(texel.y) && std::isfinite(texel.z))) refuse(i, "not finite");
+        sum += static_cast<double>(texel.x) + texel.y + texel.z;
+    }
+    const double floor = -kNegativeNoise * sum / (3.0 * static_cast<double>(map.pixels.size()));
+    EnvironmentMapFile file;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            float& value = map.pixels[i][c];
+            if (value >= 0.0f) continue;
+            if (value < floor) refuse(i, "negative beyond lossy-compression noise");
+            value = 0.0f;
+            ++file.zeroedNegatives;
+        }
+    }
+    file.map = std::make_shared<const Image>(std::move(map));
+    return file;
+}
+
+}  // namespace strata

@@ -1,0 +1,56 @@
+#pragma once
+// What a ray that leaves the scene sees, as a scene is given it (MeshData::environment), and the
+// light at infinity it becomes: none, a uniform radiance (uniform_environment_light.h) or a
+// latitude-longitude HDR map (environment_map_light.h).
+//
+// The default rule: a scene given no environment and holding no light at all (no Ke, no point
+// light) is lit by a uniform environment of radiance 1, under which a diffuse surface that sees
+// only the sky shows its albedo (notes section 5.3); a scene with lights stays dark outside.
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <glm/vec3.hpp>
+
+#include "lights/light.h"
+
+namespace strata {
+
+struct Image;
+
+struct Environment {
+    enum class Kind { Default, None, Uniform, Map };
+    Kind kind = Kind::Default;           // Default: by the rule above
+    glm::vec3 radiance{1.0f};            // Uniform: from every direction
+    std::shared_ptr<const Image> map;    // Map: as readEnvironmentMap gives it
+    float rotationDegrees = 0.0f;        // Map: turned about the up axis +y
+};
+
+// What a scene says on stderr when the default rule lights it.
+inline constexpr const char* kDefaultEnvironmentNote =
+    "the scene has no light; lighting it with a uniform white environment (--env none for black)";
+
+// The environment after the default rule, given whether the scene has any other light; a black
+// uniform environment becomes none.
+Environment resolveEnvironment(const Environment& given, bool sceneHasLights);
+// The largest radiance component the environment sends (for the truncation bound's Le_max).
+float maxRadiance(const Environment& environment);
+// The light of a resolved environment, or nullptr for none. `sceneRadius` is the radius of the
+// scene's bounding sphere, which the light's power needs (light.h).
+std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float sceneRadius);
+
+// Lossily compressed EXRs (DWAA/DWAB, as Blender's bundled maps are) ring slightly below 0 beside
+// bright texels, down to about 3% of the map's mean radiance in the maps measured: components down
+// to this fraction of the mean, negated, are that noise.
+inline constexpr float kNegativeNoise = 0.05f;
+
+// A map as read, with the count of slightly negative texel components read as 0.
+struct EnvironmentMapFile {
+    std::shared_ptr<const Image> map;
+    size_t zeroedNegatives = 0;
+};
+// Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
+// finite and >= 0, lossy-compression noise read as 0. Throws strata::Error naming the file for
+// any other image: not 2:1, a texel more negative than that noise, or one not finite.
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
+
+}  // namespace strata

@@ -1,0 +1,215 @@
+// The environment lights (uniform_environment_light.h, environment_map_light.h): sample() gives
+// the density pdf() reports (a chi-square over the map's texels, with expected counts integrated
+// from pdf() itself, and E[1/pdf] = 4 pi), the radiance emitted() reports, the documented
+// direction convention and rotation, and the power pi r^2 * integral of L over the sphere; and
+// readEnvironmentMap's checks.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+#include <glm/geometric.hpp>
+
+#include "io/image_io.h"
+#include "lights/environment.h"
+#include "lights/environment_map_light.h"
+#include "lights/uniform_environment_light.h"
+#include "sampling/random.h"
+#include "util/constants.h"
+#include "util/error.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+
+glm::vec2 randomPoint(uint64_t k) {
+    const uint64_t bits = mixBits(k + 0xe27);
+    return {uniformFloat(bits), uniformFloat(bits << 24)};
+}
+
+constexpr LightHit kMiss{glm::vec3(0.0f), INFINITY};
+
+// The world direction of the map's angles (theta from +y, phi from -z toward +x), the map turned
+// by `degrees` about +y (right-handed), as environment_map_light.h documents it.
+glm::dvec3 worldDirection(double theta, double phi, double degrees) {
+    const glm::dvec3 local(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+    const double a = degrees * M_PI / 180.0;
+    return {std::cos(a) * local.x + std::sin(a) * local.z, local.y,
+            -std::sin(a) * local.x + std::cos(a) * local.z};
+}
+
+// A 16 x 8 map whose red channel names the texel (1 + its index), with a bright spot.
+constexpr int kWidth = 16, kHeight = 8;
+Image labelledMap() {
+    Image map{kWidth, kHeight, std::vector<glm::vec3>(kWidth * kHeight)};
+    for (int i = 0; i < kWidth * kHeight; ++i) map.pixels[i] = glm::vec3(1.0f + i, 0.5f, 0.25f);
+    map.pixels[2 * kWidth + 11].y = 500.0f;
+    return map;
+}
+int texelIndex(const glm::vec3& radiance) { return static_cast<int>(radiance.x) - 1; }
+
+}  // namespace
+
+TEST_CASE("uniform environment: uniform over the sphere, pdf 1/(4 pi), power pi r^2 4 pi L") {
+    const UniformEnvironmentLight light(glm::vec3(1.0f, 2.0f, 3.0f), 2.0f);
+    constexpr int kSamples = 40000;
+    double sumZ = 0.0, sumZ2 = 0.0;
+    for (int k = 0; k < kSamples; ++k) {
+        const auto s = light.sample(glm::vec3(0.0f), randomPoint(k));
+        REQUIRE(s);
+        CHECK(glm::length(s->direction) == doctest::Approx(1.0f).epsilon(1e-6));
+        CHECK(std::isinf(s->distance));
+        CHECK_FALSE(s->onSurface);
+        CHECK(s->pdf == light.pdf(glm::vec3(0.0f), s->direction, kMiss));
+        sumZ += s->direction.z;
+        sumZ2 += s->direction.z * s->direction.z;
+    }
+    // Uniform on the sphere: z uniform on [-1, 1], mean 0 (variance 1/3), E[z^2] = 1/3
+    // (variance 4/45).
+    CHECK(std::abs(sumZ / kSamples) < 4.0 * std::sqrt(1.0 / 3.0 / kSamples));
+    CHECK(std::abs(sumZ2 / kSamples - 1.0 / 3.0) < 4.0 * std::sqrt(4.0 / 45.0 / kSamples));
+    CHECK(light.pdf({}, {0, 1, 0}, kMiss) == doctest::Approx(1.0f / (4.0f * kPi)));
+    CHECK(light.emitted({0, -1, 0}, kMiss) == glm::vec3(1.0f, 2.0f, 3.0f));
+    CHECK(light.power().z == doctest::Approx(kPi * 4.0f * 4.0f * kPi * 3.0f));
+    CHECK_FALSE(light.isDelta());
+}
+
+TEST_CASE("environment map: sample() has the density pdf() gives and the radiance emitted() gives") {
+    const double rotation = 30.0;
+    const EnvironmentMapLight light(std::make_shared<const Image>(labelledMap()), rotation, 1.0f);
+    // Expected counts: pdf() integrated over each texel by the midpoint rule in (theta, phi),
+    // d(omega) = sin(theta) d(theta) d(phi).
+    constexpr int kSub = 8;
+    constexpr int kSamples = 200000;
+    std::vector<double> expected(kWidth * kHeight, 0.0);
+    double total = 0.0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            for (int i = 0; i < kSub; ++i) {
+                for (int j = 0; j < kSub; ++j) {
+                    const double theta = M_PI * (y + (i + 0.5) / kSub) / kHeight;
+                    const double phi = 2.0 * M_PI * ((x + (j + 0.5) / kSub) / kWidth - 0.5);
+                    const glm::vec3 d(worldDirection(theta, phi, rotation));
+                    // The midpoints name the texel through emitted(): the convention holds.
+                    REQUIRE(texelIndex(light.emitted(d, kMiss)) == y * kWidth + x);
+                    const double cell = (M_PI / (kHeight * kSub)) * (2.0 * M_PI / (kWidth * kSub));
+                    expected[y * kWidth + x] += light.pdf({}, d, kMiss) * std::sin(theta) * cell;
+                }
+            }
+            total += expected[y * kWidth + x];
+        }
+    }
+    CHECK(total == doctest::Approx(1.0).epsilon(1e-4));
+
+    std::vector<double> counts(kWidth * kHeight, 0.0);
+    double inverseDensity = 0.0;
+    int pdfMismatches = 0;
+    for (int k = 0; k < kSamples; ++k) {
+        const auto s = light.sample(glm::vec3(0.0f), randomPoint(k));
+        REQUIRE(s);
+        REQUIRE(glm::length(s->direction) == doctest::Approx(1.0f).epsilon(1e-5));
+        CHECK(std::isinf(s->distance));
+        CHECK(s->radiance == light.emitted(s->direction, kMiss));
+        const float pdf = light.pdf({}, s->direction, kMiss);
+        if (std::abs(pdf - s->pdf) > 1e-4f * s->pdf) ++pdfMismatches;
+        counts[texelIndex(s->radiance)] += 1.0;
+        inverseDensity += 1.0 / s->pdf;
+    }
+    CHECK(pdfMismatches == 0);
+    double chiSquare = 0.0;
+    for (size_t i = 0; i < counts.size(); ++i) {
+        const double e = kSamples * expected[i];
+        chiSquare += (counts[i] - e) * (counts[i] - e) / e;
+    }
+    CHECK(chiSquare < test::chiSquareCritical(counts.size() - 1));
+    // Every texel has weight, so E[1/pdf] is the whole sphere's solid angle (to the accuracy of
+    // the samples' spread: 1/pdf varies about 10^3-fold here, hence the loose bound).
+    CHECK(inverseDensity / kSamples == doctest::Approx(4.0 * M_PI).epsilon(0.05));
+    // The bright texel is sampled far more often than its neighbour.
+    CHECK(counts[2 * kWidth + 11] > 20.0 * counts[2 * kWidth + 10]);
+}
+
+TEST_CASE("environment map: image centre along -z, top row up, rotation right-handed about +y") {
+    Image map{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.0f))};
+    map.pixels[2] = glm::vec3(7.0f);      // top row, just right of the centre: up, toward -z/+x
+    map.pixels[4 + 1] = glm::vec3(3.0f);  // bottom row, left of the centre: down, toward -z/-x
+    const auto shared = std::make_shared<const Image>(map);
+    const EnvironmentMapLight unturned(shared, 0.0f, 1.0f);
+    CHECK(unturned.emitted(glm::normalize(glm::vec3(0.1f, 0.5f, -1.0f)), kMiss).x == 7.0f);
+    CHECK(unturned.emitted(glm::normalize(glm::vec3(-0.1f, -0.5f, -1.0f)), kMiss).x == 3.0f);
+    CHECK(unturned.emitted(glm::normalize(glm::vec3(0.1f, 0.5f, 1.0f)), kMiss).x == 0.0f);
+    // Turned by 90 degrees counter-clockwise seen from above, the centre moves from -z to -x.
+    const EnvironmentMapLight turned(shared, 90.0f, 1.0f);
+    CHECK(turned.emitted(glm::normalize(glm::vec3(-1.0f, 0.5f, -0.1f)), kMiss).x == 7.0f);
+    CHECK(turned.emitted(glm::normalize(glm::vec3(-1.0f, -0.5f, 0.1f)), kMiss).x == 3.0f);
+}
+
+TEST_CASE("environment map: power is pi r^2 times the radiance integrated over the sphere") {
+    const Image map = labelledMap();
+    const EnvironmentMapLight light(std::make_shared<const Image>(map), 0.0f, 3.0f);
+    glm::dvec3 integral(0.0);
+    for (int y = 0; y < kHeight; ++y) {
+        // The texel rows' exact solid angles.
+        const double solidAngle = 2.0 * M_PI / kWidth *
+                                  (std::cos(M_PI * y / kHeight) - std::cos(M_PI * (y + 1) / kHeight));
+        for (int x = 0; x < kWidth; ++x) integral += solidAngle * glm::dvec3(map.pixels[y * kWidth + x]);
+    }
+    CHECK(light.power().x == doctest::Approx(M_PI * 9.0 * integral.x).epsilon(1e-5));
+    CHECK(light.power().y == doctest::Approx(M_PI * 9.0 * integral.y).epsilon(1e-5));
+    // A uniform map has the uniform light's power.
+    const EnvironmentMapLight flat(std::make_shared<const Image>(Image{8, 4, std::vector<glm::vec3>(32, glm::vec3(2.0f))}),
+                                   0.0f, 3.0f);
+    CHECK(flat.power().x == doctest::Approx(UniformEnvironmentLight(glm::vec3(2.0f), 3.0f).power().x).epsilon(1e-5));
+}
+
+TEST_CASE("environment: the default rule, and readEnvironmentMap refuses what is not a radiance map") {
+    Environment given;
+    CHECK(resolveEnvironment(given, false).kind == Environment::Kind::Uniform);
+    CHECK(resolveEnvironment(given, false).radiance == glm::vec3(1.0f));
+    CHECK(resolveEnvironment(given, true).kind == Environment::Kind::None);
+    given.kind = Environment::Kind::Uniform;
+    given.radiance = glm::vec3(0.0f);
+    CHECK(resolveEnvironment(given, false).kind == Environment::Kind::None);
+    given.radiance = glm::vec3(0.5f, 4.0f, 1.0f);
+    CHECK(maxRadiance(resolveEnvironment(given, true)) == 4.0f);
+
+    const auto dir = test::scratchDir("environment-maps");
+    writeImage(dir / "good.exr", labelledMap());
+    const EnvironmentMapFile good = readEnvironmentMap(dir / "good.exr");
+    CHECK(good.map->pixels == labelledMap().pixels);
+    CHECK(good.zeroedNegatives == 0);
+    // Lossy-compression ringing (texels a little below 0) reads as 0: the mean radiance is about
+    // 22 here, so -1 is within 5% of it.
+    Image ringing = labelledMap();
+    ringing.pixels[7].y = -1.0f;
+    writeImage(dir / "ringing.exr", ringing);
+    const EnvironmentMapFile zeroed = readEnvironmentMap(dir / "ringing.exr");
+    CHECK(zeroed.zeroedNegatives == 1);
+    CHECK(zeroed.map->pixels[7].y == 0.0f);
+    writeImage(dir / "square.exr", Image{4, 4, std::vector<glm::vec3>(16, glm::vec3(1.0f))});
+    Image negative = labelledMap();
+    negative.pixels[kWidth + 3].z = -2.0f;
+    writeImage(dir / "negative.exr", negative);
+    Image infinite = labelledMap();
+    infinite.pixels[5].x = INFINITY;
+    writeImage(dir / "infinite.exr", infinite);
+    const struct {
+        const char* file;
+        const char* expected;
+    } cases[] = {{"square.exr", "square.exr: an environment map must be a latitude-longitude image twice as wide as high, got 4x4"},
+                 {"negative.exr", "negative.exr: texel (3, 1) is negative beyond lossy-compression noise"},
+                 {"infinite.exr", "infinite.exr: texel (5, 0) is not finite"},
+                 {"absent.exr", "absent.exr: no such EXR file"}};
+    for (const auto& c : cases) {
+        CAPTURE(c.file);
+        std::string message = "no error";
+        try {
+            readEnvironmentMap(dir / c.file);
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        CHECK(message.find(c.expected) != std::string::npos);
+    }
+}
