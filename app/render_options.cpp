@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <charconv>
 #include <cstdio>
 
 #include "util/error.h"
@@ -29,9 +30,42 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
     command.add_flag("--nee", nee,
                      "Next-event estimation: sample emitting triangles (MIS with the sampler) "
                      "and point lights (reached only this way)");
+    command.add_option("--noise-threshold", noiseThreshold,
+                       "Adaptive sampling: a pixel stops receiving passes at this relative "
+                       "standard error (0: off)")
+        ->capture_default_str();
 }
 
-RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
+std::vector<std::string> RenderOptions::arguments() const {
+    // The shortest text that reads back as the same double.
+    const auto text = [](double value) {
+        char digits[32];
+        return std::string(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+    };
+    // Only what differs from the defaults, which the command fills in again.
+    const RenderOptions defaults;
+    std::vector<std::string> args;
+    if (!scene.empty()) args.push_back(scene);
+    if (!cameraFile.empty()) args.insert(args.end(), {"--camera", cameraFile});
+    if (width) args.insert(args.end(), {"--width", std::to_string(*width)});
+    if (height) args.insert(args.end(), {"--height", std::to_string(*height)});
+    if (depth != defaults.depth) args.insert(args.end(), {"--depth", std::to_string(depth)});
+    if (epsilon) args.insert(args.end(), {"--epsilon", text(*epsilon)});
+    if (sampler != defaults.sampler) args.insert(args.end(), {"--sampler", sampler});
+    if (seed != defaults.seed) args.insert(args.end(), {"--seed", std::to_string(seed)});
+    if (threads != defaults.threads) args.insert(args.end(), {"--threads", std::to_string(threads)});
+    if (rouletteDepth != defaults.rouletteDepth) {
+        args.insert(args.end(), {"--roulette-depth", std::to_string(rouletteDepth)});
+    }
+    if (generalMaterials) args.push_back("--general-materials");
+    if (nee) args.push_back("--nee");
+    if (noiseThreshold != defaults.noiseThreshold) {
+        args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
+    }
+    return args;
+}
+
+RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
     if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
@@ -42,11 +76,11 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
         if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
         TruncationChoice choice{};
         try {
-            choice = chooseSceneTruncationDepth(*epsilon, loaded.scene);
+            choice = chooseSceneTruncationDepth(*epsilon, scene);
         } catch (const Error& e) {
             throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
-        const SceneSummary& summary = loaded.scene.summary();
+        const SceneSummary& summary = scene.summary();
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
                      choice.depth, *epsilon, choice.bound, summary.maxAlbedo, summary.maxEmission);
@@ -58,6 +92,10 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     settings.integrator.lambertianFastPath = !generalMaterials;
     settings.seed = seed;
     settings.threads = threads;
+    if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
+        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+    }
+    settings.adaptive.threshold = noiseThreshold;
     return settings;
 }
 

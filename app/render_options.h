@@ -1,10 +1,12 @@
 #pragma once
 // The options every rendering command shares (render, view, bench), registered on a CLI11
-// subcommand and checked in one place.
+// subcommand, checked and turned into the renderer's settings in one place. The bench fills them
+// in code for its own renders and for the `strata render` children it times.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 #include <CLI/App.hpp>
 
 #include "scene/camera.h"
@@ -26,12 +28,15 @@ struct RenderOptions {
     bool nee = false;
     int rouletteDepth = -1;
     bool generalMaterials = false;
+    double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);
+    // The command-line arguments that addTo parses back into these options (the scene first).
+    std::vector<std::string> arguments() const;
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
-    RenderSettings renderSettings(const LoadedScene& loaded) const;
+    RenderSettings renderSettings(const Scene& scene) const;
     // Reads the scene's files (OBJ, MTL, camera JSON) without parsing them.
     SceneFiles readSceneFiles() const;
     // Loads the scene and camera: parseScene(readSceneFiles()).
