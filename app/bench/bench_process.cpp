@@ -1,6 +1,5 @@
 #include "bench/bench_process.h"
 
-#include <algorithm>
 #include <chrono>
 #include <fcntl.h>
 #include <spawn.h>
@@ -31,12 +30,7 @@ ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::pat
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime)};
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
+    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime), usage.ru_maxrss};
 }
 
 }  // namespace strata

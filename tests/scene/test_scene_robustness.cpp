@@ -20,7 +20,7 @@ struct Placement {
     glm::dvec3 offset;
 };
 
-// The placements: translated by 1e5 and 1e6 (along a diagonal, so every axis is far from
+// The placements: translated by 1e5 and 1e6 (along a diagonal, so every axis is far from
 // the origin), scaled by 1e-3 and 1e4.
 const Placement kPlacements[] = {{1.0, glm::dvec3(1e5, -1e5, 1e5)},
                                  {1.0, glm::dvec3(1e6, 1e6, -1e6)},
