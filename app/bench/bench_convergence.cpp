@@ -33,14 +33,17 @@ struct Reference {
 
 // Runs `session` to `budget`, each pass it completes reported to `progress`.
 void renderWithProgress(RenderSession& session, const RenderBudget& budget, ProgressReporter& progress) {
-    session.run(budget, [&](const PassReport& report) { progress.update(report.passes, session.counters().paths); });
+    session.run(budget, [&](const PassReport& report) {
+        progress.update(report.passes, session.counters().paths);
+    });
 }
 
 Image renderReference(const LoadedScene& loaded, const Camera& camera, RenderOptions options,
                       const ConvergenceSettings& settings) {
     options.sampler = "strata24";
     options.seed = settings.seed + kReferenceSeedOffset;
-    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene), {0, settings.referencePasses});
+    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene),
+                          {0, settings.referencePasses});
     ProgressReporter progress("reference " + sceneName(loaded.objPath), settings.referencePasses,
                               kPathsPerPass);
     renderWithProgress(session, {}, progress);
@@ -88,7 +91,8 @@ ImageError measure(const Image& image, const Reference& reference) {
 ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const Camera& camera,
                       const RenderOptions& options, const Reference& reference,
                       const ConvergenceSettings& settings, const std::string& variant = "") {
-    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene), {0, settings.maxPasses});
+    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene),
+                          {0, settings.maxPasses});
     const RenderSettings& render = session.settings();
     ConvergenceRun run{label,
                        loaded.objPath.string(),
@@ -111,8 +115,9 @@ ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const
         const ImageError error = measure(Image::fromMeans(session.buffer()), reference);
         const RenderCounters counters = session.counters();
         const double seconds = session.renderSeconds();
-        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, session.spp(), counters.paths, counters.rays,
-                                             error.mse, error.rmse, error.relMse, efficiency(error.relMse, seconds),
+        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, session.spp(), counters.paths,
+                                             counters.rays, error.mse, error.rmse, error.relMse,
+                                             efficiency(error.relMse, seconds),
                                              session.buffer().droppedSamples()});
         if (seconds >= settings.maxSeconds) break;
     }

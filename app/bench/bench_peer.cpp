@@ -92,8 +92,9 @@ std::string runPeerComparison(const PeerSettings& settings) {
                            number(light.intensity.y), number(light.intensity.z)});
     }
 
-    std::vector<Entrant> entrants = {{"strata render", renderCommandLine(strata, settings.spp, strataImage), {}, {}, {}},
-                                     {kEmbreePathTracer, embreeArgs, {}, {}, {}}};
+    std::vector<Entrant> entrants = {
+        {"strata render", renderCommandLine(strata, settings.spp, strataImage), {}, {}, {}},
+        {kEmbreePathTracer, embreeArgs, {}, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "vs-embree")) {
         return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" + *failed + "` failed (see " +
                log.string() + "; Debian package embree-tools).\n";

@@ -122,7 +122,8 @@ long peakRssOfFullHdRender(const std::filesystem::path& scene, const std::filesy
     options.depth = 0;
     options.threads = threads;
     const auto image = outDir / "rss-probe.exr";
-    const ProcessTiming t = runTimed(renderCommandLine(options, kPathsPerPass, image), outDir / "rss-probe.log");
+    const ProcessTiming t =
+        runTimed(renderCommandLine(options, kPathsPerPass, image), outDir / "rss-probe.log");
     std::filesystem::remove(image);
     return t.ok() ? t.peakRssKiB : -1;
 }

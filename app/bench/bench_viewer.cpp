@@ -69,8 +69,8 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     std::vector<Entrant> entrants = {
         {"strata render", renderCommandLine(batch, settings.spp), {}, {}, {}},
         {"strata view --headless", view, [&](const auto& log) { return viewReports.read(log); }, {}, {}},
-        {"strata view --headless (split view)", splitView, [&](const auto& log) { return splitReports.read(log); },
-         {}, {}}};
+        {"strata view --headless (split view)", splitView,
+         [&](const auto& log) { return splitReports.read(log); }, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "viewer")) {
         return kTitle + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
     }

@@ -241,7 +241,8 @@ bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
     // Noise is measured at complete passes; strata24's estimate needs two pass means.
     if (job.step() != 0 || job.pass() < 2) return true;
     for (auto& side : job.sides) {
-        side.history.push_back({static_cast<double>(job.spp()), side.session.renderSeconds(), job.curveError(side)});
+        side.history.push_back(
+            {static_cast<double>(job.spp()), side.session.renderSeconds(), job.curveError(side)});
     }
     return true;
 }
@@ -274,9 +275,9 @@ void RenderWorker::publish(const Job& job, bool idle, bool midStep) {
         snapshot->droppedSamples += session.buffer().droppedSamples();
         const AdaptiveSampling& adaptive = session.adaptive();
         const auto* done = adaptive.enabled() ? &adaptive.doneMask() : nullptr;
-        snapshot->sides.push_back({DisplayImage::fromBuffer(session.buffer(), side.stratified, done), side.history,
-                                   session.renderSeconds(),
-                                   adaptive.enabled() ? adaptive.activePixels() : session.buffer().pixelCount()});
+        const size_t active = adaptive.enabled() ? adaptive.activePixels() : session.buffer().pixelCount();
+        snapshot->sides.push_back({DisplayImage::fromBuffer(session.buffer(), side.stratified, done),
+                                   side.history, session.renderSeconds(), active});
     }
     std::function<void()> onPublish;
     {

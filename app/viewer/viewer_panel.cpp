@@ -218,8 +218,8 @@ void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSetting
     if (snapshot.sides.size() != 2) return;
     // Against a reference the curves are film/image_metrics.h's RMSE, the bench's number for the
     // same image; without one, an estimate from the samples themselves, of another quantity.
-    ImGui::Text("%s", snapshot.againstReference ? "RMSE against the reference (RGB, as strata bench)"
-                                               : "estimated standard error of mean luminance (RMS, no reference)");
+    ImGui::Text("%s", snapshot.againstReference ? "RMSE vs the reference (RGB; as strata bench)"
+                                               : "estimated std. error of mean luminance (RMS)");
     std::vector<ErrorSeries> series;
     for (int side = 0; side < 2; ++side) {
         series.push_back({sideLabel(settings.halves[side]), kSideColours[side], &snapshot.sides[side].history});

@@ -177,7 +177,8 @@ TEST_CASE("render session: a pass range renders exactly those passes; two ranges
     checkIdentical(second.buffer(), passes);
 
     // Added as the MPI ranks' buffers are (render_job.cpp): the counts exactly, the sums up to the
-    // order of the additions (a few ulps: render_job.cpp's bound is 2 gamma_{n-1}, 3.7e-14 at n = 168).
+    // order of the additions, which no two orders can make bit-identical in general (a few ulps:
+    // render_job.cpp's bound is 2 gamma_{n-1}, 3.7e-14 at n = 168).
     AccumulationBuffer& sum = first.buffer();
     const auto reals = sum.realArrays();
     const auto moreReals = second.buffer().realArrays();

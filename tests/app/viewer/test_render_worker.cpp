@@ -99,7 +99,8 @@ TEST_CASE("render worker: its error against a reference is imageError's RMSE of 
     // RMSE over RGB channels (image_metrics.h) from one on luminance.
     RenderWorker worker;
     WorkerConfig config = furnaceOnOneThread(6, 5, 2);
-    auto reference = std::make_shared<Image>(Image{6, 5, std::vector<glm::vec3>(30, glm::vec3(1.5f, 1.0f, 2.0f))});
+    auto reference =
+        std::make_shared<Image>(Image{6, 5, std::vector<glm::vec3>(30, glm::vec3(1.5f, 1.0f, 2.0f))});
     reference->pixels[7] = glm::vec3(0.2f, 3.0f, 1.0f);
     config.reference = reference;
     config.targetSpp = 24 * 3;
