@@ -152,7 +152,7 @@ void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<Co
         "set output 'error-vs-time-" + stem + ".png'\n"
         "set datafile separator ','\n"
         "set logscale xy\nset format y '%g'\nset grid\nset key top right\n"
-        "set xlabel 'render CPU seconds (" + std::to_string(runs.front().threads) + " threads)'\n"
+        "set xlabel 'render CPU seconds (" + threadsText(runs.front().threads) + ")'\n"
         "set ylabel 'RMSE against the reference'\n"
         "set title '" + runs.front().scene + ", depth " + std::to_string(runs.front().depth) +
         " (" + runs.front().reference + " reference)'\n"

@@ -43,6 +43,10 @@ std::string cell(const char* format, ...) {
     return buffer;
 }
 
+std::string threadsText(int threads) {
+    return std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+}
+
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
     const auto temporary = path.string() + ".tmp" + std::to_string(getpid());
     {

@@ -115,10 +115,10 @@ std::string runPeerComparison(const PeerSettings& settings) {
                cell("%.3f", ce), cell("%.3f", paths / ce * 1e-6), "-", cell("%.4f", embreeMean)});
     writeTextFile(settings.outDir / "peer.csv", table.csv());
     return "\n### Against Embree's tutorial path tracer (" + settings.scene.string() + ")\n\n" +
-           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %d threads, whole-process "
+           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %s, whole-process "
                 "wall time including loading and BVH build, runs alternated.\n\n",
                 settings.width, settings.height, settings.spp, settings.depth, settings.depth + 1,
-                threads) +
+                threadsText(threads).c_str()) +
            table.markdown() +
            cell("\nStrata paths/s / Embree paths/s: %.3f by wall time, %.3f by CPU time\n", te / ts,
                 ce / cs) +

@@ -216,7 +216,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
                "set style fill solid 0.8\nset boxwidth 0.6\nset grid ytics\nset yrange [0:*]\n"
                "set ylabel 'Mrays per CPU-second'\nset xtics rotate by -25 left\nset bmargin 7\n"
                "set title 'Path tracer against Embree random-ray ceiling, " + name + ", " +
-                   std::to_string(maxThreads) + " threads'\n"
+                   threadsText(maxThreads) + "'\n"
                "plot 'throughput-bars.dat' using 0:2:xtic(1) with boxes lc rgb '#3070b0' notitle, "
                "'' using 0:2:(sprintf('%.1f',$2)) with labels offset 0,0.7 notitle\n");
     advance();

@@ -86,10 +86,10 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
                cell("%.1f", median(viewReports.p95))});
     writeTextFile(settings.outDir / "viewer.csv", table.csv());
     return kTitle +
-           cell("%s, %dx%d, %d spp, depth %d, strata24, %d threads; whole processes including start-up "
+           cell("%s, %dx%d, %d spp, depth %d, strata24, %s; whole processes including start-up "
                 "and loading, runs alternated.\n\n",
                 settings.scene.filename().string().c_str(), settings.width, settings.height, settings.spp,
-                settings.depth, threads) +
+                settings.depth, threadsText(threads).c_str()) +
            table.markdown() +
            cell("\nViewer throughput / `strata render` throughput: **%.3f** (target at least 0.9).\n",
                 renderSeconds / viewSeconds) +

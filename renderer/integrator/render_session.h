@@ -7,7 +7,9 @@
 // A session renders the image's passes in order from the first of its pass range. Its samples
 // are those of ProgressiveRenderer for the same (seed, pixel, pass, step), however the passes are
 // cut into calls: whole passes, steps, groups of steps or bands of rows give bit-identical
-// buffers, and so do two sessions over adjacent pass ranges summed (pass_partition.h).
+// buffers. A session over a pass range holds exactly those passes, so the sessions of MPI ranks
+// over a partition of the passes (pass_partition.h) add up to the whole render, up to the order
+// of the additions (render_job.cpp).
 #include <atomic>
 #include <cstdint>
 #include <functional>
