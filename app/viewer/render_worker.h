@@ -2,8 +2,8 @@
 // The viewer's render thread. It drives a RenderSession (integrator/render_session.h) a step or a
 // group of steps at a time (a pass = 24 steps of one path per pixel) for one or two configurations
 // of the same camera (the split view's sides, step for step, so both always hold equal samples)
-// and publishes snapshots for the UI thread, which
-// only ever takes the latest one under a short lock: it never waits for a step or a pass.
+// and publishes snapshots for the UI thread, which only ever takes the latest one under a short
+// lock: it never waits for a step or a pass.
 // Any change of scene, camera or setting restarts accumulation after the step in flight; a target
 // (spp, render time, or every pixel under the noise threshold) or a pause blocks the thread on a
 // condition variable (no CPU) until something changes.
