@@ -1,7 +1,7 @@
 #pragma once
-// Running another program from start to exit, for the bench's comparisons between whole
-// processes (Embree's tutorial path tracer, `strata render` under mpiexec, `strata view`) and its
-// memory probe.
+// Running another program from start to exit: every child of the bench goes through here (the
+// whole-process comparisons with Embree's tutorial path tracer, `strata render` under mpiexec and
+// `strata view`, the memory probe, gnuplot).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,7 +15,9 @@ struct ProcessTiming {
     bool ok() const { return wall >= 0.0; }
 };
 
-// Runs argv (found on PATH when argv[0] has no slash), its stdout and stderr into `log`.
-ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log);
+// Runs argv (found on PATH when argv[0] has no slash) in `directory` (empty: this process's),
+// its stdout and stderr into `log`.
+ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log,
+                       const std::filesystem::path& directory = {});
 
 }  // namespace strata
