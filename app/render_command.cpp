@@ -7,10 +7,10 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
-#include "film/adaptive_sampling.h"
 #include "util/error.h"
 #include "io/image_io.h"
 #include "integrator/pass_partition.h"
+#include "integrator/render_session.h"
 #include "progress.h"
 #include "render_job.h"
 #include "render_options.h"
@@ -25,7 +25,6 @@ struct RenderCommand {
     float exposure = 0.0f;
     std::string tonemap = "clamp";
     bool json = false;
-    double noiseThreshold = 0.0;
     bool earlyOut = true;
 
     // The checks that need no scene, so a bad option fails before a large scene is read.
@@ -41,9 +40,8 @@ Tonemap RenderCommand::checkOptions(int ranks) const {
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
-    if (noiseThreshold < 0.0) throw Error("--noise-threshold: must be at least 0 (0: off)");
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
-    if (noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
+    if (render.noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
     return *tonemapKind;
 }
 
@@ -54,7 +52,7 @@ void RenderCommand::run() const {
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
     const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
-    const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded); });
+    const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
@@ -76,40 +74,36 @@ void RenderCommand::run() const {
 
     const auto passes = static_cast<uint32_t>(spp / kPathsPerPass);
     const uint32_t passesToRender = dark && earlyOut ? 0 : passes;
-    const PassRange mine = passesOfRank(passesToRender, job.rank(), job.ranks());
-    AccumulationBuffer buffer =
-        job.collectively([&] { return AccumulationBuffer(camera.width(), camera.height()); });
-    ProgressiveRenderer renderer(loaded.scene, camera, settings);
+    RenderSession session = job.collectively([&] {
+        return RenderSession(loaded.scene, camera, settings,
+                             passesOfRank(passesToRender, job.rank(), job.ranks()));
+    });
     // mpirun binds each rank to a core (for 2 ranks or fewer) or a socket unless told otherwise,
     // and TBB keeps to the cores a process may use: say so when that leaves cores idle.
     if (job.underMpi() && job.isRoot() && settings.threads == 0 &&
-        renderer.threadCount() < static_cast<int>(std::thread::hardware_concurrency())) {
+        session.threadCount() < static_cast<int>(std::thread::hardware_concurrency())) {
         std::fprintf(stderr,
                      "note: rank 0 renders with %d of its host's %u hardware threads because "
                      "mpirun bound it to fewer cores; run mpirun with --bind-to none to use them "
                      "all\n",
-                     renderer.threadCount(), std::thread::hardware_concurrency());
+                     session.threadCount(), std::thread::hardware_concurrency());
     }
     // Rank 0 reports the whole job's progress: JobProgress adds up every rank's passes.
     std::optional<ProgressReporter> progress;
     if (job.isRoot()) progress.emplace("render", passesToRender, kPathsPerPass);
-    // Adaptive sampling (single process only: checkOptions refuses it under MPI).
-    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
     {
         // Made and destroyed on every rank alike, around (not in) the step that may fail on some.
         JobProgress jobProgress(job);
         job.collectively([&] {
-            for (uint32_t pass = mine.begin; pass < mine.end; ++pass) {
-                const uint64_t pathsBefore = renderer.counters().paths;
-                renderer.renderPass(buffer, pass,
-                                    adaptive.enabled() ? &adaptive.doneMask() : nullptr);
-                jobProgress.addPass(renderer.counters().paths - pathsBefore);
+            // The session stops at the end of this rank's passes, or (one process only:
+            // checkOptions refuses it under MPI) once adaptive sampling has finished every pixel.
+            session.run({}, [&](const PassReport& report) {
+                jobProgress.addPass(report.paths);
                 if (progress) {
                     const PassTally done = jobProgress.tally();
                     progress->update(done.passes, done.paths);
                 }
-                if (adaptive.enabled() && adaptive.update(buffer) == 0) break;
-            }
+            });
             jobProgress.flush();
         });
         if (progress) {
@@ -118,7 +112,8 @@ void RenderCommand::run() const {
             if (done.passes > 0) progress->finish(done.passes, done.paths);
         }
     }
-    RenderCounters counters = renderer.counters();
+    AccumulationBuffer& buffer = session.buffer();
+    RenderCounters counters = session.counters();
     job.reduce(buffer, counters);
     if (!job.isRoot()) return;
     const double seconds = progress->elapsedSeconds();
@@ -145,7 +140,7 @@ void RenderCommand::run() const {
             {"depth", settings.integrator.depth},
             {"seed", settings.seed},
             {"ranks", job.ranks()},
-            {"threads", renderer.threadCount()},  // per rank
+            {"threads", session.threadCount()},  // per rank
             {"seconds", seconds},
             {"spp", spp},
             {"passes", passes},
@@ -156,8 +151,8 @@ void RenderCommand::run() const {
             {"mean_rgb", {mean.x, mean.y, mean.z}},
             {"nonfinite_samples", buffer.droppedSamples()},
             {"black_early_out", dark && earlyOut},
-            {"noise_threshold", noiseThreshold},
-            {"pixels_done_early", buffer.pixelCount() - adaptive.activePixels()},
+            {"noise_threshold", settings.adaptive.threshold},
+            {"pixels_done_early", buffer.pixelCount() - session.adaptive().activePixels()},
             {"mean_spp", static_cast<double>(counters.paths) / buffer.pixelCount()},
             {"outputs", outputs},
         };
@@ -179,9 +174,6 @@ void addRenderCommand(CLI::App& app) {
     sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "PNG tonemap: " + tonemapNames())->capture_default_str();
     sub->add_flag("--json", command->json, "Print a JSON report on stdout");
-    sub->add_option("--noise-threshold", command->noiseThreshold,
-                    "Adaptive sampling: a pixel stops at this relative standard error (0: off)")
-        ->capture_default_str();
     sub->add_flag("!--no-early-out", command->earlyOut,
                   "Render even a scene that cannot be anything but black");
     sub->callback([command] { command->run(); });

@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -38,9 +39,47 @@ void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
         ->excludes(envOption);
     command.add_option("--env-rotate", envRotate, "Turn the environment map about +y (degrees)")
         ->capture_default_str();
+    command.add_option("--noise-threshold", noiseThreshold,
+                       "Adaptive sampling: a pixel stops receiving passes at this relative "
+                       "standard error (0: off)")
+        ->capture_default_str();
 }
 
-RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
+std::vector<std::string> RenderOptions::arguments() const {
+    // The shortest text that reads back as the same double.
+    const auto text = [](double value) {
+        char digits[32];
+        return std::string(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+    };
+    // Only what differs from the defaults, which the command fills in again.
+    const RenderOptions defaults;
+    std::vector<std::string> args;
+    if (!scene.empty()) args.push_back(scene);
+    if (!cameraFile.empty()) args.insert(args.end(), {"--camera", cameraFile});
+    if (width) args.insert(args.end(), {"--width", std::to_string(*width)});
+    if (height) args.insert(args.end(), {"--height", std::to_string(*height)});
+    if (depth != defaults.depth) args.insert(args.end(), {"--depth", std::to_string(depth)});
+    if (epsilon) args.insert(args.end(), {"--epsilon", text(*epsilon)});
+    if (sampler != defaults.sampler) args.insert(args.end(), {"--sampler", sampler});
+    if (seed != defaults.seed) args.insert(args.end(), {"--seed", std::to_string(seed)});
+    if (threads != defaults.threads) args.insert(args.end(), {"--threads", std::to_string(threads)});
+    if (rouletteDepth != defaults.rouletteDepth) {
+        args.insert(args.end(), {"--roulette-depth", std::to_string(rouletteDepth)});
+    }
+    if (nee) args.push_back("--nee");
+    if (!env.empty()) args.insert(args.end(), {"--env", env});
+    if (!envColor.empty()) {
+        args.push_back("--env-color");
+        for (float c : envColor) args.push_back(text(c));
+    }
+    if (envRotate != defaults.envRotate) args.insert(args.end(), {"--env-rotate", text(envRotate)});
+    if (noiseThreshold != defaults.noiseThreshold) {
+        args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
+    }
+    return args;
+}
+
+RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
     if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
@@ -51,14 +90,14 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
         if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
         TruncationChoice choice{};
         try {
-            choice = chooseSceneTruncationDepth(*epsilon, loaded.scene);
+            choice = chooseSceneTruncationDepth(*epsilon, scene);
         } catch (const Error& e) {
             throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
-                     choice.depth, *epsilon, choice.bound, loaded.scene.summary().maxAlbedo,
-                     maxEmittedRadiance(loaded.scene));
+                     choice.depth, *epsilon, choice.bound, scene.summary().maxAlbedo,
+                     maxEmittedRadiance(scene));
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
@@ -66,6 +105,10 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
     settings.threads = threads;
+    if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
+        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+    }
+    settings.adaptive.threshold = noiseThreshold;
     return settings;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The options every rendering command shares (render, view, bench), registered on a CLI11
-// subcommand and checked in one place.
+// subcommand, checked and turned into the renderer's settings in one place. The bench fills them
+// in code for its own renders and for the `strata render` children it times.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -29,12 +30,15 @@ struct RenderOptions {
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
+    double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
 
     // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
     void addTo(CLI::App& command, bool sceneRequired);
+    // The command-line arguments that addTo parses back into these options (the scene first).
+    std::vector<std::string> arguments() const;
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
-    RenderSettings renderSettings(const LoadedScene& loaded) const;
+    RenderSettings renderSettings(const Scene& scene) const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
     // file) without parsing them.
     SceneBundle readSceneBundle() const;

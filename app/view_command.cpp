@@ -21,7 +21,6 @@ struct ViewCommand {
     bool split = true;
     int targetSpp = 0;
     float targetSeconds = 0.0f;
-    float noiseThreshold = 0.0f;
     float scale = 1.0f;
     float exposure = 0.0f;
     std::string tonemap = "clamp";
@@ -44,9 +43,6 @@ void ViewCommand::run() const {
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
         throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
     }
-    if (!(noiseThreshold >= 0.0f && noiseThreshold <= 10.0f)) {
-        throw Error("--noise-threshold: must be in 0..10 (0: off)");
-    }
     if (frames < 0) throw Error("--frames: must be at least 0");
     if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
@@ -59,7 +55,7 @@ void ViewCommand::run() const {
     RenderOptions options = render;
     if (options.scene.empty()) options.scene = defaultScene().string();
     auto scene = std::make_shared<const LoadedScene>(options.loadScene());
-    const RenderSettings settings = render.renderSettings(*scene);
+    const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n", describeScene(*scene).c_str());
     if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
     std::shared_ptr<const Image> referenceImage;
@@ -79,7 +75,7 @@ void ViewCommand::run() const {
     viewerSettings.threads = settings.threads;
     viewerSettings.targetSpp = targetSpp;
     viewerSettings.targetSeconds = targetSeconds;
-    viewerSettings.noiseThreshold = noiseThreshold;
+    viewerSettings.noiseThreshold = static_cast<float>(settings.adaptive.threshold);
     viewerSettings.resolutionScale = scale;
     viewerSettings.display.exposure = exposure;
     viewerSettings.display.tonemap = *tonemapKind;
@@ -158,9 +154,6 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
-        ->capture_default_str();
-    sub->add_option("--noise-threshold", command->noiseThreshold,
-                    "Adaptive sampling: stop sampling pixels whose relative standard error is at most T (0: off)")
         ->capture_default_str();
     sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
         ->capture_default_str();

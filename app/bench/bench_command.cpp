@@ -151,7 +151,7 @@ void BenchCommand::run() const {
 
     const int threadCount = threads > 0 ? threads : tbb::info::default_concurrency();
     std::string summary = "# strata bench" + std::string(quick ? " --quick" : "") + "\n\n" + utcNow() +
-                          ", " + cpuModel() + ", " + std::to_string(threadCount) + " threads" +
+                          ", " + cpuModel() + ", " + threadsText(threadCount) +
                           cell(", load average %.2f at the start", startLoad) + ".\n\n" +
                           convergenceSummary(runs) + "\n" + skipsSummary(runs);
 

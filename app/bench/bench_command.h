@@ -1,5 +1,5 @@
 #pragma once
-// `strata bench`: run time against error, throughput against Embree's ceiling, and a peer (issue 5).
+// `strata bench`: run time against error, throughput against Embree's ceiling, and a peer.
 #include <CLI/App.hpp>
 
 namespace strata {

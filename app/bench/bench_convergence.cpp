@@ -1,20 +1,18 @@
 #include "bench/bench_convergence.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <tuple>
 
-#include "film/adaptive_sampling.h"
 #include "bench/convergence.h"
 #include "util/error.h"
 #include "film/image_metrics.h"
 #include "progress.h"
-#include "integrator/progressive_renderer.h"
+#include "integrator/render_session.h"
 #include "bench/ray_throughput.h"
 #include "bench/reference_cache.h"
+#include "render_options.h"
 #include "scene/scene_loader.h"
 
 namespace strata {
@@ -23,7 +21,6 @@ namespace {
 // The adaptive-sampling variant of the skips comparison stops pixels at 5% relative error.
 constexpr double kBenchNoiseThreshold = 0.05;
 
-using Clock = std::chrono::steady_clock;
 // The reference must not share the bench's random numbers, or its error would correlate with
 // theirs.
 constexpr uint64_t kReferenceSeedOffset = 0x5eed5eed5eed5eedull;
@@ -34,28 +31,29 @@ struct Reference {
     std::string kind;
 };
 
-Image renderReference(const LoadedScene& loaded, const Camera& camera,
-                      const PathIntegratorSettings& integrator, const ConvergenceSettings& settings) {
-    RenderSettings render;
-    render.integrator = integrator;
-    render.integrator.sampler = SamplerKind::Strata24;
-    render.seed = settings.seed + kReferenceSeedOffset;
-    render.threads = settings.threads;
-    AccumulationBuffer buffer(camera.width(), camera.height());
-    ProgressiveRenderer renderer(loaded.scene, camera, render);
+// Runs `session` to `budget`, each pass it completes reported to `progress`.
+void renderWithProgress(RenderSession& session, const RenderBudget& budget, ProgressReporter& progress) {
+    session.run(budget, [&](const PassReport& report) {
+        progress.update(report.passes, session.counters().paths);
+    });
+}
+
+Image renderReference(const LoadedScene& loaded, const Camera& camera, RenderOptions options,
+                      const ConvergenceSettings& settings) {
+    options.sampler = "strata24";
+    options.seed = settings.seed + kReferenceSeedOffset;
+    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene),
+                          {0, settings.referencePasses});
     ProgressReporter progress("reference " + sceneName(loaded.scenePath()), settings.referencePasses,
                               kPathsPerPass);
-    for (uint32_t pass = 0; pass < settings.referencePasses; ++pass) {
-        renderer.renderPass(buffer, pass);
-        progress.update(pass + 1, renderer.counters().paths);
-    }
-    progress.finish(settings.referencePasses, renderer.counters().paths);
-    return Image::fromMeans(buffer);
+    renderWithProgress(session, {}, progress);
+    progress.finish(session.completedPasses(), session.counters().paths);
+    return Image::fromMeans(session.buffer());
 }
 
 std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
-                                       const PathIntegratorSettings& integrator,
-                                       const ConvergenceSettings& settings) {
+                                       const RenderOptions& options, const ConvergenceSettings& settings) {
+    const PathIntegratorSettings integrator = options.renderSettings(loaded.scene).integrator;
     if (auto exact = furnaceRadiance(loaded.scene, camera.pose(), integrator)) {
         return Reference{exact, {}, "analytic"};
     }
@@ -77,58 +75,53 @@ std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& 
         return std::nullopt;
     }
     std::filesystem::create_directories(path.parent_path());
-    Image image = renderReference(loaded, camera, integrator, settings);
+    Image image = renderReference(loaded, camera, options, settings);
     writeImage(path, image);
     std::fprintf(stderr, "wrote reference %s\n", path.string().c_str());
     return Reference{std::nullopt, std::move(image), "made"};
 }
 
 ImageError measure(const Image& image, const Reference& reference) {
-    return reference.constant ? compareToConstant(image, *reference.constant)
-                              : compareImages(image, reference.image);
+    return reference.constant ? imageError(image, *reference.constant)
+                              : imageError(image, reference.image);
 }
 
-// `noiseThreshold` > 0: adaptive sampling (adaptive_sampling.h) decides which pixels get passes.
+// Checkpoints at 1, 2, 4, ... passes and at the last; the run ends at the first checkpoint past
+// maxSeconds, or where adaptive sampling (options.noiseThreshold > 0) finished every pixel.
 ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const Camera& camera,
-                      const RenderSettings& render, const Reference& reference,
-                      const ConvergenceSettings& settings, const std::string& variant = "",
-                      double noiseThreshold = 0.0) {
+                      const RenderOptions& options, const Reference& reference,
+                      const ConvergenceSettings& settings, const std::string& variant = "") {
+    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene),
+                          {0, settings.maxPasses});
+    const RenderSettings& render = session.settings();
     ConvergenceRun run{label,
                        loaded.scenePath().string(),
                        std::string(samplerName(render.integrator.sampler)),
                        variant,
                        render.integrator.depth,
                        render.integrator.nextEventEstimation,
+                       session.threadCount(),
                        reference.kind,
                        {}};
-    AccumulationBuffer buffer(camera.width(), camera.height());
-    ProgressiveRenderer renderer(loaded.scene, camera, render);
     ProgressReporter progress(run.scene + "/" + run.sampler + (variant.empty() ? "" : "/" + variant) +
                                   "/d" + std::to_string(run.depth),
                               settings.maxPasses, kPathsPerPass);
-    AdaptiveSampling adaptive({noiseThreshold}, buffer.pixelCount());
-    double seconds = 0.0, cpuSeconds = 0.0;
-    uint32_t nextCheckpoint = 1;
-    for (uint32_t pass = 0; pass < settings.maxPasses; ++pass) {
-        const auto start = Clock::now();
+    double cpuSeconds = 0.0;
+    for (uint32_t passes = 1; !session.finished({}); passes *= 2) {
         const double cpuStart = processCpuSeconds();
-        renderer.renderPass(buffer, pass, adaptive.enabled() ? &adaptive.doneMask() : nullptr);
-        if (adaptive.enabled()) adaptive.update(buffer);
-        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        renderWithProgress(session, {passes * kPathsPerPass}, progress);
         cpuSeconds += processCpuSeconds() - cpuStart;
-        progress.update(pass + 1, renderer.counters().paths);
-        if (pass + 1 != nextCheckpoint) continue;
-        nextCheckpoint *= 2;
-        const ImageError error = measure(Image::fromMeans(buffer), reference);
-        const RenderCounters counters = renderer.counters();
-        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, (pass + 1) * kPathsPerPass, counters.paths,
+        // Measured outside the render time.
+        const ImageError error = measure(Image::fromMeans(session.buffer()), reference);
+        const RenderCounters counters = session.counters();
+        const double seconds = session.renderSeconds();
+        run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, session.spp(), counters.paths,
                                              counters.rays, error.mse, error.rmse, error.relMse,
                                              efficiency(error.relMse, seconds),
-                                             buffer.droppedSamples()});
+                                             session.buffer().droppedSamples()});
         if (seconds >= settings.maxSeconds) break;
     }
-    progress.finish(run.checkpoints.empty() ? 0 : run.checkpoints.back().spp / kPathsPerPass,
-                    renderer.counters().paths);
+    progress.finish(session.completedPasses(), session.counters().paths);
     return run;
 }
 
@@ -158,8 +151,9 @@ void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<Co
         "set terminal pngcairo noenhanced size 640,440 font ',10'\n"
         "set output 'error-vs-time-" + stem + ".png'\n"
         "set datafile separator ','\n"
-        "set logscale xy\nset grid\nset key top right\n"
-        "set xlabel 'render CPU seconds (2 threads)'\nset ylabel 'RMSE against the reference'\n"
+        "set logscale xy\nset format y '%g'\nset grid\nset key top right\n"
+        "set xlabel 'render CPU seconds (" + threadsText(runs.front().threads) + ")'\n"
+        "set ylabel 'RMSE against the reference'\n"
         "set title '" + runs.front().scene + ", depth " + std::to_string(runs.front().depth) +
         " (" + runs.front().reference + " reference)'\n"
         "plot ";
@@ -201,31 +195,31 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             static_cast<double>(settings.width) * loaded.settings.height / loaded.settings.width)));
         const Camera camera(loaded.settings.pose, settings.width, height);
         for (int depth : settings.depths) {
-            RenderSettings render;
-            render.integrator.depth = depth;
+            RenderOptions options;
+            options.depth = depth;
             // Point lights are reached by next-event estimation only: without it such a scene is black.
-            render.integrator.nextEventEstimation = loaded.scene.lights().deltaLights() > 0;
-            render.seed = settings.seed;
-            render.threads = settings.threads;
-            const auto reference = findReference(loaded, camera, render.integrator, settings);
+            options.nee = loaded.scene.lights().deltaLights() > 0;
+            options.seed = settings.seed;
+            options.threads = settings.threads;
+            const auto reference = findReference(loaded, camera, options, settings);
             if (!reference) continue;
             std::vector<ConvergenceRun> group;
             for (const auto& name : settings.samplers) {
-                render.integrator.sampler = *parseSamplerKind(name);
-                group.push_back(runOne(label, loaded, camera, render, *reference, settings));
+                options.sampler = name;
+                group.push_back(runOne(label, loaded, camera, options, *reference, settings));
                 writeRunCsv(settings.outDir, group.back());
             }
             plotErrorAgainstTime(settings.outDir, group);
             runs.insert(runs.end(), group.begin(), group.end());
             if (!settings.skips) continue;
-            render.integrator.sampler = SamplerKind::Strata24;
-            RenderSettings roulette = render;
-            roulette.integrator.rouletteDepth = 2;
-            for (auto [variant, variantRender, threshold] :
-                 {std::tuple{"roulette-from-2", roulette, 0.0},
-                  std::tuple{"adaptive-5pct", render, kBenchNoiseThreshold}}) {
-                runs.push_back(runOne(label, loaded, camera, variantRender, *reference, settings,
-                                      variant, threshold));
+            options.sampler = "strata24";
+            RenderOptions roulette = options;
+            roulette.rouletteDepth = 2;
+            RenderOptions adaptive = options;
+            adaptive.noiseThreshold = kBenchNoiseThreshold;
+            for (const auto& [variant, variantOptions] : {std::pair{"roulette-from-2", roulette},
+                                                          std::pair{"adaptive-5pct", adaptive}}) {
+                runs.push_back(runOne(label, loaded, camera, variantOptions, *reference, settings, variant));
                 writeRunCsv(settings.outDir, runs.back());
             }
         }

@@ -26,8 +26,8 @@ struct ConvergenceSettings {
     uint64_t seed = 0;
     int threads = 0;
     std::filesystem::path outDir;
-    // Also run strata24 with each of the renderer's skips switched the other way (issue "skip
-    // what a scene doesn't need"): the Lambertian-only path off, Russian roulette on, adaptive
+    // Also run strata24 with each of the renderer's skips (README, "Skip what a scene does not
+    // need") switched the other way: the Lambertian-only path off, Russian roulette on, adaptive
     // sampling on. skipsSummary compares each with the plain strata24 run.
     bool skips = false;
 };
@@ -52,6 +52,7 @@ struct ConvergenceRun {
     std::string variant;  // empty for the plain run, else which skip was switched (see skips)
     int depth = 0;
     bool nee = false;
+    int threads = 0;        // the render threads it ran on
     std::string reference;  // "analytic", "cache", "file" or "made"
     std::vector<Checkpoint> checkpoints;
 };

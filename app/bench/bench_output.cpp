@@ -2,10 +2,10 @@
 
 #include <cstdarg>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <unistd.h>
 
+#include "bench/bench_process.h"
 #include "util/error.h"
 
 namespace strata {
@@ -43,6 +43,10 @@ std::string cell(const char* format, ...) {
     return buffer;
 }
 
+std::string threadsText(int threads) {
+    return std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+}
+
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
     const auto temporary = path.string() + ".tmp" + std::to_string(getpid());
     {
@@ -59,13 +63,13 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text) {
 
 bool runGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& script) {
     writeTextFile(dir / (name + ".gp"), script);
-    const std::string command = "cd '" + dir.string() + "' && gnuplot '" + name + ".gp' 2>&1";
-    const int status = std::system(command.c_str());
-    if (status != 0) {
-        std::fprintf(stderr, "note: gnuplot failed on %s/%s.gp (install gnuplot-nox); no plot\n",
-                     dir.string().c_str(), name.c_str());
+    const auto log = dir / (name + ".gp.log");
+    if (!runTimed({"gnuplot", name + ".gp"}, log, dir).ok()) {
+        std::fprintf(stderr, "note: gnuplot failed on %s/%s.gp (see %s; install gnuplot-nox); no plot\n",
+                     dir.string().c_str(), name.c_str(), log.string().c_str());
         return false;
     }
+    std::filesystem::remove(log);
     return true;
 }
 

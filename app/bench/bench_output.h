@@ -20,6 +20,9 @@ struct Table {
 // printf-style formatting of one cell.
 std::string cell(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
+// "1 thread", "2 threads", ...: how many threads a measurement ran on, for titles and labels.
+std::string threadsText(int threads);
+
 // Writes `text` to `path` through a temporary file; throws strata::Error naming the file.
 void writeTextFile(const std::filesystem::path& path, const std::string& text);
 

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "bench/bench_output.h"
-#include "bench/bench_process.h"
+#include "bench/bench_race.h"
+#include "bench/strata_child.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "io/image_io.h"
-#include "progress.h"
 
 namespace strata {
 namespace {
@@ -65,13 +65,15 @@ std::string runPeerComparison(const PeerSettings& settings) {
     const auto strataImage = settings.outDir / "peer-strata.exr";
     const auto embreeImage = settings.outDir / "peer-embree.ppm";
     const auto log = settings.outDir / "peer.log";
-    const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
 
-    std::vector<std::string> strataArgs = {
-        exe, "render", settings.scene.string(), "--nee", "--sampler", "strata24",
-        "--depth", std::to_string(settings.depth), "--spp", std::to_string(settings.spp),
-        "--width", std::to_string(settings.width), "--height", std::to_string(settings.height),
-        "--threads", std::to_string(threads), "--out", strataImage.string()};
+    RenderOptions strata;
+    strata.scene = settings.scene.string();
+    strata.nee = true;
+    strata.sampler = "strata24";
+    strata.depth = settings.depth;
+    strata.width = settings.width;
+    strata.height = settings.height;
+    strata.threads = threads;
     const CameraPose& pose = scene.settings.pose;
     std::vector<std::string> embreeArgs = {
         kEmbreePathTracer, "-i", settings.scene.string(),
@@ -90,27 +92,16 @@ std::string runPeerComparison(const PeerSettings& settings) {
                            number(light.intensity.y), number(light.intensity.z)});
     }
 
-    std::vector<double> strataTimes, embreeTimes, strataCpu, embreeCpu;
-    ProgressReporter progress("vs-embree", 2 * settings.repeats, 1);
-    for (int r = 0; r < settings.repeats; ++r) {
-        // Alternate which goes first so that neither always runs on a warmer machine.
-        for (int k = 0; k < 2; ++k) {
-            const bool strataTurn = (r + k) % 2 == 0;
-            const ProcessTiming t = runTimed(strataTurn ? strataArgs : embreeArgs, log);
-            if (t.wall < 0.0) {
-                return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" +
-                       std::string(strataTurn ? "strata render" : kEmbreePathTracer) +
-                       "` failed (see " + log.string() + "; Debian package embree-tools).\n";
-            }
-            (strataTurn ? strataTimes : embreeTimes).push_back(t.wall);
-            (strataTurn ? strataCpu : embreeCpu).push_back(t.cpu);
-            progress.update(strataTimes.size() + embreeTimes.size(), 0);
-        }
+    std::vector<Entrant> entrants = {
+        {"strata render", renderCommandLine(strata, settings.spp, strataImage), {}, {}, {}},
+        {kEmbreePathTracer, embreeArgs, {}, {}, {}}};
+    if (const auto failed = race(entrants, settings.repeats, log, "vs-embree")) {
+        return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" + *failed + "` failed (see " +
+               log.string() + "; Debian package embree-tools).\n";
     }
-    progress.finish(2 * settings.repeats, 0);
     const double paths = double(settings.width) * settings.height * settings.spp;
-    const double ts = median(strataTimes), te = median(embreeTimes);
-    const double cs = median(strataCpu), ce = median(embreeCpu);
+    const double ts = entrants[0].medianWall(), te = entrants[1].medianWall();
+    const double cs = entrants[0].medianCpu(), ce = entrants[1].medianCpu();
     const auto [strataMean, strataClamped] = exrMeans(strataImage);
     const double embreeMean = ppmMean(embreeImage);
 
@@ -124,10 +115,10 @@ std::string runPeerComparison(const PeerSettings& settings) {
                cell("%.3f", ce), cell("%.3f", paths / ce * 1e-6), "-", cell("%.4f", embreeMean)});
     writeTextFile(settings.outDir / "peer.csv", table.csv());
     return "\n### Against Embree's tutorial path tracer (" + settings.scene.string() + ")\n\n" +
-           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %d threads, whole-process "
+           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %s, whole-process "
                 "wall time including loading and BVH build, runs alternated.\n\n",
                 settings.width, settings.height, settings.spp, settings.depth, settings.depth + 1,
-                threads) +
+                threadsText(threads).c_str()) +
            table.markdown() +
            cell("\nStrata paths/s / Embree paths/s: %.3f by wall time, %.3f by CPU time\n", te / ts,
                 ce / cs) +

@@ -1,6 +1,5 @@
 #include "bench/bench_process.h"
 
-#include <algorithm>
 #include <chrono>
 #include <fcntl.h>
 #include <spawn.h>
@@ -11,7 +10,8 @@ extern char** environ;
 
 namespace strata {
 
-ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::path& log) {
+ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::path& log,
+                       const std::filesystem::path& directory) {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -19,6 +19,7 @@ ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::pat
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    if (!directory.empty()) posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
     const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
@@ -31,12 +32,7 @@ ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::pat
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime)};
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
+    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime), usage.ru_maxrss};
 }
 
 }  // namespace strata

@@ -1,6 +1,7 @@
 #pragma once
-// Timing another program from start to exit, for the bench's comparisons between whole processes
-// (Embree's tutorial path tracer, `strata render` under mpiexec).
+// Running another program from start to exit: every child of the bench goes through here (the
+// whole-process comparisons with Embree's tutorial path tracer, `strata render` under mpiexec and
+// `strata view`, the memory probe, gnuplot).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -8,13 +9,15 @@
 namespace strata {
 
 struct ProcessTiming {
-    double wall = -1.0;  // seconds; negative: the program could not start or exited non-zero
-    double cpu = 0.0;    // user + system CPU seconds of the child and its children
+    double wall = -1.0;     // seconds; negative: the program could not start or exited non-zero
+    double cpu = 0.0;       // user + system CPU seconds of the child and its children
+    long peakRssKiB = 0;    // the largest resident set of the child and its children
+    bool ok() const { return wall >= 0.0; }
 };
 
-// Runs argv (found on PATH when argv[0] has no slash), its stdout and stderr into `log`.
-ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log);
-
-double median(std::vector<double> values);
+// Runs argv (found on PATH when argv[0] has no slash) in `directory` (empty: this process's),
+// its stdout and stderr into `log`.
+ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log,
+                       const std::filesystem::path& directory = {});
 
 }  // namespace strata

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "bench/bench_output.h"
-#include "bench/bench_process.h"
-#include "progress.h"
+#include "bench/bench_race.h"
+#include "bench/strata_child.h"
 
 namespace strata {
 
@@ -17,13 +17,15 @@ std::string runRankComparison([[maybe_unused]] const RankSettings& settings) {
     return title + "Skipped: this strata was built without MPI.\n";
 #else
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
-    const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
     const auto render = [&](int threadsPerRank, const std::string& image) {
-        return std::vector<std::string>{
-            exe, "render", settings.scene.string(), "--sampler", "strata24",
-            "--depth", std::to_string(settings.depth), "--spp", std::to_string(settings.spp),
-            "--width", std::to_string(settings.width), "--height", std::to_string(settings.height),
-            "--threads", std::to_string(threadsPerRank), "--out", (settings.outDir / image).string()};
+        RenderOptions options;
+        options.scene = settings.scene.string();
+        options.sampler = "strata24";
+        options.depth = settings.depth;
+        options.width = settings.width;
+        options.height = settings.height;
+        options.threads = threadsPerRank;
+        return renderCommandLine(options, settings.spp, settings.outDir / image);
     };
     const auto ranks = [](int count, std::vector<std::string> args) {
         // --bind-to none: mpiexec would otherwise pin each of 2 ranks to one core.
@@ -36,36 +38,21 @@ std::string runRankComparison([[maybe_unused]] const RankSettings& settings) {
     // default; copying through the shared segment works everywhere. A setting the user made wins.
     setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 0);
     const int half = std::max(1, threads / 2);
-    struct Variant {
-        std::string name;
-        std::vector<std::string> args;
-        std::vector<double> wall, cpu;
-    };
-    std::vector<Variant> variants = {
-        {"strata render, " + std::to_string(threads) + " threads", render(threads, "ranks-single.exr"), {}, {}},
-        {"mpiexec -np 1, " + std::to_string(threads) + " threads", ranks(1, render(threads, "ranks-1.exr")), {}, {}},
-        {"mpiexec -np 2, " + std::to_string(half) + (half == 1 ? " thread each" : " threads each"), ranks(2, render(half, "ranks-2.exr")), {}, {}}};
+    std::vector<Entrant> variants = {
+        {"strata render, " + threadsText(threads), render(threads, "ranks-single.exr"), {}, {}, {}},
+        {"mpiexec -np 1, " + threadsText(threads), ranks(1, render(threads, "ranks-1.exr")), {}, {}, {}},
+        {"mpiexec -np 2, " + threadsText(half) + " each", ranks(2, render(half, "ranks-2.exr")), {}, {}, {}}};
     const auto log = settings.outDir / "ranks.log";
-    const int runs = settings.repeats * static_cast<int>(variants.size());
-    ProgressReporter progress("mpi ranks", static_cast<uint64_t>(runs), 1);
-    for (int run = 0; run < runs; ++run) {
-        // Rotate the order so that no variant always runs first on a cool machine.
-        const int count = static_cast<int>(variants.size());
-        Variant& variant = variants[static_cast<size_t>((run + run / count) % count)];
-        const ProcessTiming t = runTimed(variant.args, log);
-        if (t.wall < 0.0) return title + "Skipped: `" + variant.name + "` failed (see " + log.string() + ").\n";
-        variant.wall.push_back(t.wall);
-        variant.cpu.push_back(t.cpu);
-        progress.update(static_cast<uint64_t>(run + 1), 0);
+    if (const auto failed = race(variants, settings.repeats, log, "mpi ranks")) {
+        return title + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
     }
-    progress.finish(static_cast<uint64_t>(runs), 0);
     const double paths = double(settings.width) * settings.height * settings.spp;
-    const double single = median(variants[0].wall);
+    const double single = variants[0].medianWall();
     Table table{{"run", "wall s (median of " + std::to_string(settings.repeats) + ")", "Mpaths/s",
                  "CPU s (median)", "wall time / one process"}, {}};
-    for (const Variant& v : variants) {
-        const double wall = median(v.wall);
-        table.add({v.name, cell("%.3f", wall), cell("%.3f", paths / wall * 1e-6), cell("%.3f", median(v.cpu)),
+    for (const Entrant& v : variants) {
+        const double wall = v.medianWall();
+        table.add({v.name, cell("%.3f", wall), cell("%.3f", paths / wall * 1e-6), cell("%.3f", v.medianCpu()),
                    cell("%.3f", wall / single)});
     }
     writeTextFile(settings.outDir / "ranks.csv", table.csv());

@@ -4,27 +4,23 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <tbb/info.h>
 #include <vector>
 
 #include "bench/bench_output.h"
+#include "bench/bench_process.h"
+#include "bench/strata_child.h"
 #include "util/constants.h"
-#include "util/error.h"
 #include "sampling/hemisphere.h"
 #include "progress.h"
-#include "integrator/progressive_renderer.h"
+#include "integrator/render_session.h"
+#include "render_options.h"
 #include "sampling/random.h"
 #include "bench/ray_throughput.h"
 #include "bench/reference_cache.h"
 #include "scene/scene_loader.h"
 #include "sampling/strata24.h"
 #include "sampling/stratum_schedule.h"
-
-extern char** environ;
 
 namespace strata {
 namespace {
@@ -49,22 +45,15 @@ struct RenderRate {
 };
 
 // Renders `passes` whole passes (after one untimed warm-up pass) and times them.
-RenderRate measureRender(const Scene& scene, const Camera& camera, SamplerKind sampler, int depth,
-                         bool nee, int threads, uint32_t passes, uint64_t seed) {
-    RenderSettings settings;
-    settings.integrator.depth = depth;
-    settings.integrator.sampler = sampler;
-    settings.integrator.nextEventEstimation = nee;
-    settings.seed = seed;
-    settings.threads = threads;
-    AccumulationBuffer buffer(camera.width(), camera.height());
-    ProgressiveRenderer renderer(scene, camera, settings);
-    renderer.renderPass(buffer, 0);
-    const RenderCounters before = renderer.counters();
+RenderRate measureRender(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                         uint32_t passes) {
+    RenderSession session(scene, camera, options.renderSettings(scene));
+    session.run({kPathsPerPass});
+    const RenderCounters before = session.counters();
     const double cpuStart = processCpuSeconds();
     const auto start = Clock::now();
-    for (uint32_t pass = 1; pass <= passes; ++pass) renderer.renderPass(buffer, pass);
-    const RenderCounters after = renderer.counters();
+    session.run({(1 + passes) * kPathsPerPass});
+    const RenderCounters after = session.counters();
     return {secondsSince(start), processCpuSeconds() - cpuStart, after.paths - before.paths,
             after.rays - before.rays};
 }
@@ -122,30 +111,21 @@ MeshData tessellatedScene(size_t triangles) {
     return mesh;
 }
 
-// Peak resident memory (KiB) of a child `strata render` of a 1920x1080 image.
-long peakRssOfFullHdRender(const std::filesystem::path& scene, const std::filesystem::path& out,
+// Peak resident memory (KiB) of a child `strata render` of a 1920x1080 image at depth 0
+// (memory does not depend on depth); -1 when the child failed.
+long peakRssOfFullHdRender(const std::filesystem::path& scene, const std::filesystem::path& outDir,
                            int threads) {
-    const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
-    std::vector<std::string> args = {exe, "render", scene.string(), "--width", "1920", "--height",
-                                     "1080", "--spp", "24", "--depth", "0", "--threads",
-                                     std::to_string(threads), "--out", out.string()};
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) throw Error("cannot start " + exe + " to measure memory");
-    int status = 0;
-    rusage usage{};
-    wait4(pid, &status, 0, &usage);
-    std::filesystem::remove(out);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1;
-    return usage.ru_maxrss;
+    RenderOptions options;
+    options.scene = scene.string();
+    options.width = 1920;
+    options.height = 1080;
+    options.depth = 0;
+    options.threads = threads;
+    const auto image = outDir / "rss-probe.exr";
+    const ProcessTiming t =
+        runTimed(renderCommandLine(options, kPathsPerPass, image), outDir / "rss-probe.log");
+    std::filesystem::remove(image);
+    return t.ok() ? t.peakRssKiB : -1;
 }
 
 // ns per call of `sample(i)` over `count` calls; the checksum keeps the work from being removed.
@@ -179,18 +159,27 @@ std::string runThroughput(const ThroughputSettings& settings) {
     const bool nee = !loaded.scene.mesh().pointLights.empty();
     const Camera camera = cameraOfWidth(loaded, quick ? 96 : 256);
     const uint32_t passes = quick ? 2 : 6;
+    RenderOptions options;
+    options.depth = settings.depth;
+    options.nee = nee;
+    options.seed = settings.seed;
+    options.threads = settings.threads;
+    const auto withSampler = [&](const char* sampler) {
+        RenderOptions o = options;
+        o.sampler = sampler;
+        return o;
+    };
     std::string summary;
     ProgressReporter progress("throughput", 8, 1);
     uint64_t stage = 0;
     auto advance = [&] { progress.update(++stage, 0); };
 
-    // 1. The path tracer, per sampler (issue 3: strata24 within 10% of uniform's speed).
+    // 1. The path tracer, per sampler: strata24's bookkeeping (the stratum schedule) should cost
+    // little, within 10% of uniform's speed.
     Table rates{{"scene", "sampler", "depth", "size", "threads", "Mpaths/s", "Mrays/s",
                  "Mpaths/CPU-s", "Mrays/CPU-s", "rays/path"}, {}};
-    const RenderRate uniform = measureRender(loaded.scene, camera, SamplerKind::Uniform, settings.depth,
-                                             nee, settings.threads, passes, settings.seed);
-    const RenderRate strata = measureRender(loaded.scene, camera, SamplerKind::Strata24, settings.depth,
-                                            nee, settings.threads, passes, settings.seed);
+    const RenderRate uniform = measureRender(loaded.scene, camera, withSampler("uniform"), passes);
+    const RenderRate strata = measureRender(loaded.scene, camera, withSampler("strata24"), passes);
     for (const auto& [sampler, rate] : {std::pair{"uniform", uniform}, std::pair{"strata24", strata}}) {
         rates.add({name, sampler, std::to_string(settings.depth),
                    cell("%dx%d", camera.width(), camera.height()), std::to_string(maxThreads),
@@ -222,12 +211,13 @@ std::string runThroughput(const ThroughputSettings& settings) {
     writeTextFile(settings.outDir / "throughput-ceiling.csv", ceiling.csv());
     writeTextFile(settings.outDir / "throughput-bars.dat", bars);
     runGnuplot(settings.outDir, "throughput-bars",
-               "set terminal pngcairo noenhanced size 800,420 font ',10'\nset output 'throughput-bars.png'\n"
-               "set rmargin 14\n"
+               "set terminal pngcairo noenhanced size 800,440 font ',10'\nset output 'throughput-bars.png'\n"
+               "set rmargin 20\n"
                "set style fill solid 0.8\nset boxwidth 0.6\nset grid ytics\nset yrange [0:*]\n"
-               "set ylabel 'Mrays per CPU-second'\nset xtics rotate by -25 left\nset bmargin 6\n"
+               "set offsets 0, 0, graph 0.12, 0\n"
+               "set ylabel 'Mrays per CPU-second'\nset xtics rotate by -25 left\nset bmargin 7\n"
                "set title 'Path tracer against Embree random-ray ceiling, " + name + ", " +
-                   std::to_string(maxThreads) + " threads'\n"
+                   threadsText(maxThreads) + "'\n"
                "plot 'throughput-bars.dat' using 0:2:xtic(1) with boxes lc rgb '#3070b0' notitle, "
                "'' using 0:2:(sprintf('%.1f',$2)) with labels offset 0,0.7 notitle\n");
     advance();
@@ -236,8 +226,9 @@ std::string runThroughput(const ThroughputSettings& settings) {
     Table scaling{{"threads", "Mpaths/s (wall)", "speed-up", "efficiency", "Mpaths/CPU-s"}, {}};
     double oneThread = 0.0;
     for (int t = 1; t <= maxThreads; ++t) {
-        const RenderRate r = measureRender(loaded.scene, camera, SamplerKind::Strata24, settings.depth,
-                                           nee, t, passes, settings.seed);
+        RenderOptions threadOptions = withSampler("strata24");
+        threadOptions.threads = t;
+        const RenderRate r = measureRender(loaded.scene, camera, threadOptions, passes);
         if (t == 1) oneThread = r.mpathsPerSecond();
         scaling.add({std::to_string(t), cell("%.3f", r.mpathsPerSecond()),
                      cell("%.2f", r.mpathsPerSecond() / oneThread),
@@ -251,8 +242,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
     Table resolution{{"size", "pixels", "seconds/pass", "CPU ns/path", "Mpaths/s"}, {}};
     for (int width : quick ? std::vector<int>{32, 64, 128} : std::vector<int>{64, 128, 256, 512}) {
         const Camera c = cameraOfWidth(loaded, width);
-        const RenderRate r = measureRender(loaded.scene, c, SamplerKind::Strata24, settings.depth, nee,
-                                           settings.threads, quick ? 1 : 2, settings.seed);
+        const RenderRate r = measureRender(loaded.scene, c, withSampler("strata24"), quick ? 1 : 2);
         const uint32_t timedPasses = quick ? 1 : 2;
         resolution.add({cell("%dx%d", c.width(), c.height()),
                         std::to_string(size_t(c.width()) * c.height()),
@@ -273,8 +263,9 @@ std::string runThroughput(const ThroughputSettings& settings) {
         const double build = secondsSince(buildStart);
         const Camera c(CameraPose{{0.0f, 0.0f, 3.4f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f},
                        quick ? 64 : 128, quick ? 64 : 128);
-        const RenderRate r = measureRender(scene, c, SamplerKind::Strata24, settings.depth, false,
-                                           settings.threads, passes, settings.seed);
+        RenderOptions unlit = withSampler("strata24");
+        unlit.nee = false;  // the box has no point lights
+        const RenderRate r = measureRender(scene, c, unlit, passes);
         const double ceilingRate = measureRandomRays(scene, RayQuery::Single, settings.threads,
                                                      quick ? 0.2 : 0.6, settings.seed).raysPerCpuSecond() * 1e-6;
         triangles.add({std::to_string(scene.summary().triangles), cell("%.3f", build),
@@ -286,14 +277,15 @@ std::string runThroughput(const ThroughputSettings& settings) {
     writeTextFile(settings.outDir / "throughput-triangles.dat", triangleData);
     runGnuplot(settings.outDir, "throughput-triangles",
                "set terminal pngcairo noenhanced size 640,400 font ',10'\nset output 'throughput-triangles.png'\n"
-               "set logscale x\nset grid\nset yrange [0:*]\nset xlabel 'triangles'\nset ylabel 'Mrays per CPU-second'\n"
+               "set logscale x\nset grid\nset yrange [0:*]\nset key bottom left\n"
+               "set xlabel 'triangles'\nset ylabel 'Mrays per CPU-second'\n"
                "set title 'Cost against triangle count (tessellated sphere in a box)'\n"
                "plot 'throughput-triangles.dat' using 1:2 with linespoints lw 2 title 'path tracer', "
                "'' using 1:3 with linespoints lw 2 title 'rtcIntersect1 random rays'\n");
     advance();
 
     // 6. Peak memory of a 1920x1080 render (depth 0: memory does not depend on depth).
-    const long rss = peakRssOfFullHdRender(settings.scene, settings.outDir / "rss-probe.exr", maxThreads);
+    const long rss = peakRssOfFullHdRender(settings.scene, settings.outDir, maxThreads);
     advance();
 
     // 7. Sampler micro-benchmark (one thread).
@@ -325,8 +317,8 @@ std::string runThroughput(const ThroughputSettings& settings) {
     progress.finish(stage, 0);
 
     summary += "### Path tracer throughput (" + name + ")\n\n" + rates.markdown() +
-               cell("\nstrata24 / uniform render speed (paths per CPU-second): %.3f (issue 3 asks "
-                    "for within 10%%: %s)\n",
+               cell("\nstrata24 / uniform render speed (paths per CPU-second): %.3f (within the "
+                    "10%% target: %s)\n",
                     speedRatio, std::fabs(speedRatio - 1.0) <= 0.10 ? "yes" : "NO");
     summary += "\n### Embree ceiling: incoherent random rays on the same scene\n\n" + ceiling.markdown() +
                cell("\nPath tracer rays per CPU-second as a fraction of the rtcIntersect1 ceiling: "
@@ -337,7 +329,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
     summary += "\n### Cost against triangle count\n\n" + triangles.markdown();
     summary += rss > 0 ? cell("\nPeak RSS of `strata render` at 1920x1080 (24 spp): %.1f MiB\n", rss / 1024.0)
                        : std::string("\nPeak RSS of a 1920x1080 render: the child render failed\n");
-    summary += "\n### Sampler micro-benchmark (issue 3)\n\n" + sampler.markdown() +
+    summary += "\n### Sampler micro-benchmark\n\n" + sampler.markdown() +
                cell("\nNet of the random point: uniform %.2f ns, sampleStratum %.2f ns, with the "
                     "schedule %.2f ns.\n",
                     nsUniform - nsPoint, nsStratum - nsPoint, nsScheduled - nsPoint);

@@ -1,8 +1,8 @@
 #pragma once
 // `strata bench`, part 2: speed. The path tracer's Mrays/s and Mpaths/s against Embree's own
 // ceiling for incoherent rays on the same scene (ray_throughput.h); thread scaling; cost against
-// resolution and triangle count; peak memory of a 1920x1080 render; the sampler micro-benchmark
-// of issue 3 (ns/sample, and strata24 against uniform render speed).
+// resolution and triangle count; peak memory of a 1920x1080 render; the samplers' cost
+// (ns/sample, and strata24 against uniform render speed).
 #include <cstdint>
 #include <filesystem>
 #include <string>

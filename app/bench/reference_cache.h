@@ -1,5 +1,5 @@
 #pragma once
-// Reference images for error measurements (issue 5):
+// Reference images for error measurements:
 //   - analytic scenes need none: a closed furnace has the exact radiance of notes section 5.1;
 //   - other scenes use a high-spp render stored as EXR and named by a key that hashes everything
 //     the image depends on (the scene's files, the camera, the size, the depth, next-event

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "film/accumulation_buffer.h"
-#include "integrator/progressive_renderer.h"
+#include "film/image_metrics.h"
 
 namespace strata::viewer {
 namespace {
@@ -59,37 +59,60 @@ bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
            a.noiseThreshold != b.noiseThreshold;
 }
 
+RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side) {
+    RenderSettings settings;
+    settings.integrator.depth = side.depth;
+    settings.integrator.sampler = side.sampler;
+    settings.integrator.nextEventEstimation = config.nextEventEstimation;
+    settings.integrator.rouletteDepth = config.rouletteDepth;
+    settings.seed = config.seed;
+    settings.threads = config.threads;
+    // Render threads yield to the UI thread (and llvmpipe's) on a small machine.
+    settings.niceness = kRenderNiceness;
+    // The preview's single path per pixel is no estimate to judge pixels by.
+    settings.adaptive.threshold = config.preview ? 0.0 : config.noiseThreshold;
+    return settings;
+}
+
 struct RenderWorker::Job {
     struct Side {
-        AccumulationBuffer buffer;
-        std::unique_ptr<ProgressiveRenderer> renderer;
+        RenderSession session;
         bool stratified;
-        AdaptiveSampling adaptive;
-        double seconds = 0.0;
         double lastStepSeconds = -1.0;  // -1: no step yet
         std::vector<ErrorSample> history;
     };
     uint64_t generation = 0;
-    std::shared_ptr<const LoadedScene> scene;  // keeps what the renderers reference alive
+    std::shared_ptr<const LoadedScene> scene;  // keeps what the sessions reference alive
     std::unique_ptr<Camera> camera;
     std::shared_ptr<const Image> reference;
     std::vector<Side> sides;
-    uint32_t pass = 0;
-    int step = 0;
     bool preview = false;
     Clock::time_point start = Clock::now();
     std::string error;
 
-    uint32_t spp() const { return pass * kPathsPerPass + static_cast<uint32_t>(step); }
+    // The sides render step for step, one after the other: while one renders, those before it
+    // are a group of steps ahead, and the job is where the last of them is.
+    uint32_t spp() const {
+        uint32_t spp = sides.empty() ? 0 : sides.front().session.spp();
+        for (const Side& side : sides) spp = std::min(spp, side.session.spp());
+        return spp;
+    }
+    uint32_t pass() const { return spp() / kPathsPerPass; }
+    int step() const { return static_cast<int>(spp() % kPathsPerPass); }
     double renderSeconds() const {
         double total = 0.0;
-        for (const Side& side : sides) total += side.seconds;
+        for (const Side& side : sides) total += side.session.renderSeconds();
         return total;
+    }
+    // The reference is of this image's size, so the error curves measure against it.
+    bool againstReference() const {
+        return reference && camera && reference->width == camera->width() &&
+               reference->height == camera->height();
     }
     // Every pixel of every side under the noise threshold (checked at complete passes only).
     bool converged() const {
-        return !sides.empty() && step == 0 && std::all_of(sides.begin(), sides.end(), [](const Side& side) {
-                   return side.adaptive.enabled() && side.adaptive.activePixels() == 0;
+        return !sides.empty() && std::all_of(sides.begin(), sides.end(), [](const Side& side) {
+                   return side.session.converged();
                });
     }
     bool finished(const WorkerConfig& config) const {
@@ -97,6 +120,19 @@ struct RenderWorker::Job {
                (config.targetSpp > 0 && spp() >= config.targetSpp) ||
                (config.targetSeconds > 0.0 && renderSeconds() >= config.targetSeconds) || converged() ||
                (preview && spp() >= 1);
+    }
+    // A point of the side's error curve: RMSE against the reference as film/image_metrics.h
+    // defines it (the bench's measure), else the root mean square over pixels of the estimated
+    // standard error of the mean luminance.
+    double curveError(const Side& side) const {
+        const AccumulationBuffer& buffer = side.session.buffer();
+        if (againstReference()) return imageError(Image::fromMeans(buffer), *reference).rmse;
+        double squares = 0.0;
+        for (size_t p = 0; p < buffer.pixelCount(); ++p) {
+            const double e = pixelStandardError(buffer, p, side.stratified);
+            squares += e * e;
+        }
+        return std::sqrt(squares / static_cast<double>(buffer.pixelCount()));
     }
 };
 
@@ -162,21 +198,9 @@ void RenderWorker::run() {
                 job->camera = std::make_unique<Camera>(config.pose, std::max(1, config.width / divisor),
                                                        std::max(1, config.height / divisor));
                 for (const SideConfig& side : config.sides) {
-                    RenderSettings settings;
-                    settings.integrator.depth = side.depth;
-                    settings.integrator.sampler = side.sampler;
-                    settings.integrator.nextEventEstimation = config.nextEventEstimation;
-                    settings.integrator.rouletteDepth = config.rouletteDepth;
-                    settings.seed = config.seed;
-                    settings.threads = config.threads;
-                    // Render threads yield to the UI thread (and llvmpipe's) on a small machine.
-                    settings.niceness = kRenderNiceness;
-                    const size_t pixels = static_cast<size_t>(job->camera->width()) * job->camera->height();
                     job->sides.push_back(Job::Side{
-                        AccumulationBuffer(job->camera->width(), job->camera->height()),
-                        std::make_unique<ProgressiveRenderer>(config.scene->scene, *job->camera, settings),
-                        stratifies(side.sampler),
-                        AdaptiveSampling({config.preview ? 0.0 : config.noiseThreshold}, pixels), 0.0, -1.0, {}});
+                        RenderSession(config.scene->scene, *job->camera, renderSettings(config, side)),
+                        stratifies(side.sampler), -1.0, {}});
                 }
             } catch (const std::exception& e) {
                 job->sides.clear();
@@ -195,52 +219,29 @@ void RenderWorker::run() {
 bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
     double stepSeconds = 0.0;  // all sides, one step
     for (const auto& side : job.sides) stepSeconds += std::max(0.0, side.lastStepSeconds);
-    const int steps = stepsAtOnce(job.pass, job.step, stepSeconds, job.spp(), targetSpp);
+    const int steps = stepsAtOnce(job.pass(), job.step(), stepSeconds, job.spp(), targetSpp);
     for (auto& side : job.sides) {
-        const uint64_t before = side.renderer->counters().paths;
-        const auto* skip = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
-        const int height = side.buffer.height();
+        RenderSession& session = side.session;
+        const uint64_t pathsBefore = session.counters().paths;
+        const double secondsBefore = session.renderSeconds();
+        const int height = session.buffer().height();
         const int wanted = side.lastStepSeconds < 0.0
                                ? kFirstStepBands
                                : static_cast<int>(side.lastStepSeconds * steps / kBandSeconds);
         const int bands = std::clamp(wanted, 1, std::max(1, height / kMinBandRows));
-        double seconds = 0.0;  // rendering only, not the snapshots between bands
-        for (int band = 0; band < bands && !cancel_; ++band) {
-            const auto bandStart = Clock::now();
-            side.renderer->renderSteps(side.buffer, job.pass, job.step, job.step + steps,
-                                       {&cancel_, skip, height * band / bands, height * (band + 1) / bands});
-            seconds += secondsSince(bandStart);
-            if (band + 1 < bands && !cancel_) publish(job, false, true);
-        }
+        const bool rendered = session.renderSteps(steps, bands, &cancel_, [&] { publish(job, false, true); });
+        // Rendering only, not the snapshots between bands.
+        const double seconds = session.renderSeconds() - secondsBefore;
         side.lastStepSeconds = seconds / steps;
-        side.seconds += seconds;
         totalRenderSeconds_ += seconds;
-        totalPaths_ += side.renderer->counters().paths - before;
-        if (cancel_) return false;
-    }
-    job.step += steps;
-    if (job.step < kPathsPerPass) return true;
-    job.step = 0;
-    ++job.pass;
-    // The mask changes only between passes, so every pixel's passes stay complete.
-    for (auto& side : job.sides) {
-        if (side.adaptive.enabled()) side.adaptive.update(side.buffer);
+        totalPaths_ += session.counters().paths - pathsBefore;
+        if (!rendered) return false;
     }
     // Noise is measured at complete passes; strata24's estimate needs two pass means.
-    if (job.pass < 2) return true;
+    if (job.step() != 0 || job.pass() < 2) return true;
     for (auto& side : job.sides) {
-        const AccumulationBuffer& buffer = side.buffer;
-        const bool againstReference = job.reference && job.reference->width == buffer.width() &&
-                                      job.reference->height == buffer.height();
-        double squares = 0.0;
-        for (size_t p = 0; p < buffer.pixelCount(); ++p) {
-            const double e = againstReference
-                                 ? luminance(buffer.mean(p)) - luminance(glm::dvec3(job.reference->pixels[p]))
-                                 : pixelStandardError(buffer, p, side.stratified);
-            squares += e * e;
-        }
-        side.history.push_back({static_cast<double>(job.spp()), side.seconds,
-                                std::sqrt(squares / static_cast<double>(buffer.pixelCount()))});
+        side.history.push_back(
+            {static_cast<double>(job.spp()), side.session.renderSeconds(), job.curveError(side)});
     }
     return true;
 }
@@ -250,31 +251,32 @@ void RenderWorker::publish(const Job& job, bool idle, bool midStep) {
         std::lock_guard lock(snapshotMutex_);
         // Build a new image only when the UI has taken the last one, a pass just closed, or the
         // worker is about to rest (its last state must be shown).
-        const bool passClosed = job.step == 0 && !midStep;
+        const bool passClosed = job.step() == 0 && !midStep;
         if (!taken_ && !passClosed && !idle) return;
     }
     auto snapshot = std::make_shared<WorkerSnapshot>();
     snapshot->generation = job.generation;
     snapshot->preview = job.preview;
     snapshot->idle = idle;
-    snapshot->againstReference = job.reference && job.camera && job.reference->width == job.camera->width() &&
-                                 job.reference->height == job.camera->height();
+    snapshot->againstReference = job.againstReference();
     snapshot->spp = job.spp();
-    snapshot->passes = job.pass;
+    snapshot->passes = job.pass();
     snapshot->elapsedSeconds = secondsSince(job.start);
     snapshot->renderSeconds = job.renderSeconds();
     snapshot->totalPaths = totalPaths_;
     snapshot->totalRenderSeconds = totalRenderSeconds_;
     snapshot->error = job.error;
     for (const auto& side : job.sides) {
-        const RenderCounters counters = side.renderer->counters();
+        const RenderSession& session = side.session;
+        const RenderCounters counters = session.counters();
         snapshot->paths += counters.paths;
         snapshot->rays += counters.rays;
-        snapshot->droppedSamples += side.buffer.droppedSamples();
-        const auto* done = side.adaptive.enabled() ? &side.adaptive.doneMask() : nullptr;
-        snapshot->sides.push_back({DisplayImage::fromBuffer(side.buffer, side.stratified, done), side.history,
-                                   side.seconds, side.adaptive.enabled() ? side.adaptive.activePixels()
-                                                                         : side.buffer.pixelCount()});
+        snapshot->droppedSamples += session.buffer().droppedSamples();
+        const AdaptiveSampling& adaptive = session.adaptive();
+        const auto* done = adaptive.enabled() ? &adaptive.doneMask() : nullptr;
+        const size_t active = adaptive.enabled() ? adaptive.activePixels() : session.buffer().pixelCount();
+        snapshot->sides.push_back({DisplayImage::fromBuffer(session.buffer(), side.stratified, done),
+                                   side.history, session.renderSeconds(), active});
     }
     std::function<void()> onPublish;
     {

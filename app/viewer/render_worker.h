@@ -1,8 +1,9 @@
 #pragma once
-// The viewer's render thread. It drives ProgressiveRenderer::renderSteps (a pass = 24 steps of one
-// path per pixel) for one or two configurations of the same camera (the split view's sides, step
-// for step, so both always hold equal samples) and publishes snapshots for the UI thread, which
-// only ever takes the latest one under a short lock: it never waits for a step or a pass.
+// The viewer's render thread. It drives a RenderSession (integrator/render_session.h) a step or a
+// group of steps at a time (a pass = 24 steps of one path per pixel) for one or two configurations
+// of the same camera (the split view's sides, step for step, so both always hold equal samples)
+// and publishes snapshots for the UI thread, which only ever takes the latest one under a short
+// lock: it never waits for a step or a pass.
 // Any change of scene, camera or setting restarts accumulation after the step in flight; a target
 // (spp, render time, or every pixel under the noise threshold) or a pause blocks the thread on a
 // condition variable (no CPU) until something changes.
@@ -17,9 +18,9 @@
 #include <vector>
 
 #include "scene/camera.h"
-#include "film/adaptive_sampling.h"
 #include "sampling/direction_sampler.h"
 #include "display_image.h"
+#include "integrator/render_session.h"
 #include "io/image_io.h"
 #include "scene/scene_loader.h"
 
@@ -59,11 +60,16 @@ inline constexpr int kPreviewDivisor = 4;
 // Whether going from `a` to `b` restarts accumulation (anything but the targets / paused changed).
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b);
 
+// The renderer's settings for one side of `config`: the one place the viewer makes them.
+RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side);
+
 // One point of a side's error curve, taken at a completed pass.
 struct ErrorSample {
     double spp;
     double seconds;  // this side's render time
-    double error;    // RMSE against the reference, else root mean square standard error
+    // RMSE against the reference (film/image_metrics.h), else the root mean square over pixels of
+    // the estimated standard error of the mean luminance.
+    double error;
 };
 
 struct SideSnapshot {

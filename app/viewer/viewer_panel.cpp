@@ -216,8 +216,10 @@ void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {
 
 void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings) {
     if (snapshot.sides.size() != 2) return;
-    ImGui::Text("%s", snapshot.againstReference ? "RMSE against the reference (luminance)"
-                                               : "standard error of the mean (luminance, RMS)");
+    // Against a reference the curves are film/image_metrics.h's RMSE, the bench's number for the
+    // same image; without one, an estimate from the samples themselves, of another quantity.
+    ImGui::Text("%s", snapshot.againstReference ? "RMSE vs the reference (RGB; as strata bench)"
+                                               : "estimated std. error of mean luminance (RMS)");
     std::vector<ErrorSeries> series;
     for (int side = 0; side < 2; ++side) {
         series.push_back({sideLabel(settings.halves[side]), kSideColours[side], &snapshot.sides[side].history});

@@ -33,7 +33,7 @@ ImageError accumulateError(const Image& image, Reference referenceAt) {
 
 }  // namespace
 
-ImageError compareImages(const Image& image, const Image& reference) {
+ImageError imageError(const Image& image, const Image& reference) {
     if (image.width != reference.width || image.height != reference.height) {
         throw Error("reference image is " + std::to_string(reference.width) + "x" +
                     std::to_string(reference.height) + " but the render is " +
@@ -43,7 +43,7 @@ ImageError compareImages(const Image& image, const Image& reference) {
     return accumulateError(image, [&](size_t i) { return reference.pixels[i]; });
 }
 
-ImageError compareToConstant(const Image& image, const glm::vec3& reference) {
+ImageError imageError(const Image& image, const glm::vec3& reference) {
     if (image.pixels.empty()) throw Error("cannot compare an empty image");
     return accumulateError(image, [&](size_t) { return reference; });
 }

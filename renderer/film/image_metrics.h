@@ -1,8 +1,11 @@
 #pragma once
-// Error of a rendered image against a reference, per colour channel of every pixel:
-//   MSE    = mean (x - ref)^2,                RMSE = sqrt(MSE);
-//   relMSE = mean (x - ref)^2 / (ref^2 + 0.01)   (the usual relative MSE: the 0.01 keeps black
-//            reference pixels from dominating; issue 5);
+// The error of a rendered image against a reference: the one definition that the bench's curves
+// and the viewer's against-reference curve both use, so the two give the same number for the
+// same image. Over every colour channel c of every pixel i of N pixels (linear RGB, the image's
+// float values, so a render is measured as it is written):
+//   MSE    = 1/(3N) sum (x_ic - ref_ic)^2,               RMSE = sqrt(MSE);
+//   relMSE = 1/(3N) sum (x_ic - ref_ic)^2 / (ref_ic^2 + 0.01)
+//            (the usual relative MSE: the 0.01 keeps black reference pixels from dominating);
 //   efficiency = 1 / (relMSE * seconds): higher is better, independent of the budget for an
 //            estimator whose relMSE falls as 1/time.
 // Non-finite rendered values make the result non-finite (they are an error to report, not skip).
@@ -21,9 +24,9 @@ struct ImageError {
 };
 
 // Throws strata::Error when the sizes differ.
-ImageError compareImages(const Image& image, const Image& reference);
+ImageError imageError(const Image& image, const Image& reference);
 // Against a reference that is the same radiance in every pixel (an analytic scene).
-ImageError compareToConstant(const Image& image, const glm::vec3& reference);
+ImageError imageError(const Image& image, const glm::vec3& reference);
 
 double efficiency(double relMse, double seconds);
 

@@ -13,6 +13,7 @@
 #include <tbb/task_scheduler_observer.h>
 
 #include "film/accumulation_buffer.h"
+#include "film/adaptive_sampling.h"
 #include "scene/camera.h"
 #include "integrator/path_integrator.h"
 #include "scene/scene.h"
@@ -31,6 +32,8 @@ struct RenderSettings {
     // unprivileged process cannot raise a thread's priority again), which suits the viewer, whose
     // rendering all happens off its UI thread. Results do not depend on it.
     int niceness = 0;
+    // Which pixels stop receiving passes; applied by RenderSession (render_session.h).
+    AdaptiveSettings adaptive{};
 };
 
 // How much of a step to render (renderStep): the viewer renders a slow step in bands of rows so

@@ -1,6 +1,7 @@
 // The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat,
-// raising the target spp continues the same accumulation instead of restarting it, and steps
-// rendered several at a time stop exactly at a target spp inside a pass.
+// raising the target spp continues the same accumulation instead of restarting it, steps
+// rendered several at a time stop exactly at a target spp inside a pass, and its error against a
+// reference is the bench's.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -9,6 +10,8 @@
 #include <thread>
 #include <unistd.h>
 
+#include "film/image_metrics.h"
+#include "integrator/render_session.h"
 #include "render_worker.h"
 #include "test_support.h"
 
@@ -89,4 +92,29 @@ TEST_CASE("render worker: steps rendered several at once stop exactly at a targe
         const auto& counts = done->sides.at(0).image.meanAndCount;
         for (size_t p = 0; p < counts.size() / 4; ++p) CHECK(counts[4 * p + 3] == static_cast<float>(target));
     }
+}
+
+TEST_CASE("render worker: its error against a reference is imageError's RMSE of the same render") {
+    // Any image of the render's size serves as the reference; one whose channels differ tells the
+    // RMSE over RGB channels (image_metrics.h) from one on luminance.
+    RenderWorker worker;
+    WorkerConfig config = furnaceOnOneThread(6, 5, 2);
+    auto reference =
+        std::make_shared<Image>(Image{6, 5, std::vector<glm::vec3>(30, glm::vec3(1.5f, 1.0f, 2.0f))});
+    reference->pixels[7] = glm::vec3(0.2f, 3.0f, 1.0f);
+    config.reference = reference;
+    config.targetSpp = 24 * 3;
+    worker.configure(config);
+    const auto done = restAt(worker, config.targetSpp);
+    REQUIRE(done->againstReference);
+    const auto& history = done->sides.at(0).history;
+    REQUIRE(history.size() == 2);  // at passes 2 and 3
+
+    // The same render, made apart from the worker from the settings it renders with.
+    const Camera camera(config.pose, config.width, config.height);
+    RenderSession session(config.scene->scene, camera, renderSettings(config, config.sides.at(0)));
+    session.run({config.targetSpp});
+    const ImageError error = imageError(Image::fromMeans(session.buffer()), *reference);
+    CHECK(error.rmse > 0.1);
+    CHECK(history.back().error == error.rmse);
 }
