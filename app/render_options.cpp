@@ -2,14 +2,15 @@
 
 #include <cstdio>
 
+#include "bundled_assets.h"
 #include "error.h"
 #include "truncation.h"
 
 namespace strata {
 
-void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
-    auto* sceneOption = command.add_option("scene", scene, "Scene .obj (camera from NAME.json beside it)");
-    if (sceneRequired) sceneOption->required();
+void RenderOptions::addTo(CLI::App& command) {
+    command.add_option("scene", scene,
+                       "Scene .obj, camera from NAME.json beside it (default: the bundled Cornell box)");
     command.add_option("--camera", cameraFile, "Camera JSON (default: NAME.json beside the scene)");
     command.add_option("--width", width, "Image width (default: from the camera file)");
     command.add_option("--height", height, "Image height (default: from the camera file)");
@@ -64,7 +65,8 @@ RenderSettings RenderOptions::renderSettings(const LoadedScene& loaded) const {
 SceneFiles RenderOptions::readSceneFiles() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneFiles(scene, cameraPath);
+    return strata::readSceneFiles(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
+                                  cameraPath);
 }
 
 LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneFiles()); }

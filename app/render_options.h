@@ -14,7 +14,7 @@
 namespace strata {
 
 struct RenderOptions {
-    std::string scene;
+    std::string scene;  // empty: the bundled Cornell box
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
@@ -27,8 +27,8 @@ struct RenderOptions {
     int rouletteDepth = -1;
     bool generalMaterials = false;
 
-    // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
-    void addTo(CLI::App& command, bool sceneRequired);
+    // Registers the optional SCENE and the options on `command`.
+    void addTo(CLI::App& command);
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const LoadedScene& loaded) const;
