@@ -1,9 +1,12 @@
-// The installed program: this build put into a fresh prefix by `cmake --install`, run from a
-// folder with no assets/ above it, so that it can only use what was installed. Nothing in the build tree is removed or changed (the install adds its manifest).
+// The installed program: this build put into a fresh prefix by `cmake --install` (and into a .deb
+// by cpack), run from a folder with no assets/ above it, so that it can only use what was
+// installed. Nothing in the build tree is removed or changed (the install adds its manifest).
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <stb_image.h>
 
@@ -100,4 +103,55 @@ TEST_CASE("install: a moved prefix keeps working, and one without its scenes say
     CHECK(std::count(broken.err.begin(), broken.err.end(), '\n') == 1);
     CHECK(broken.err.find("the bundled scenes are missing: no folder " +
                           (fs::canonical(moved) / "prefix" / "share" / "strata").string()) != std::string::npos);
+}
+
+TEST_CASE("install: the .deb holds the program and its scenes and depends on the libraries it links") {
+    if (test::kSanitizedBuild) {
+        MESSAGE("skipped: a sanitized build's package would depend on the sanitizer runtimes");
+        return;
+    }
+    if (std::system("command -v dpkg-deb >/dev/null 2>&1") != 0) {
+        MESSAGE("skipped: no dpkg-deb (not a Debian system)");
+        return;
+    }
+    REQUIRE_MESSAGE(std::system("command -v dpkg-shlibdeps >/dev/null 2>&1") == 0,
+                    "dpkg-shlibdeps is missing (scripts/setup.sh installs dpkg-dev)");
+    const auto dir = test::scratchDir("deb");
+    const auto cpack = test::runCommand("cd " + dir.string() + " && " + STRATA_CPACK + " -G DEB --config " +
+                                        STRATA_BUILD_DIR + "/CPackConfig.cmake -B " + dir.string());
+    REQUIRE_MESSAGE(cpack.exitCode == 0, cpack.out << cpack.err);
+    fs::path deb;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() == ".deb") deb = entry.path();
+    }
+    REQUIRE_MESSAGE(deb.filename().string().rfind("strata_", 0) == 0, cpack.out);
+
+    const auto contents = test::runCommand("dpkg-deb -c " + deb.string());
+    REQUIRE_MESSAGE(contents.exitCode == 0, contents.err);
+    for (const char* file : {"./usr/bin/strata", "./usr/share/strata/NOTICE", "./usr/share/strata/cornell/cornell.obj",
+                             "./usr/share/strata/cornell/cornell.mtl", "./usr/share/strata/cornell/cornell.json",
+                             "./usr/share/strata/furnace/furnace.obj", "./usr/share/strata/glossy/glossy.obj"}) {
+        CHECK_MESSAGE(contents.out.find(std::string(" ") + file + "\n") != std::string::npos, std::string(file));
+    }
+    CHECK(contents.out.find("readme") == std::string::npos);
+
+    const auto field = [&](const std::string& name) {
+        const auto value = test::runCommand("dpkg-deb -f " + deb.string() + " " + name);
+        REQUIRE_MESSAGE(value.exitCode == 0, value.err);
+        return value.out;
+    };
+    CHECK(field("Package") == "strata\n");
+    CHECK(field("Section") == "graphics\n");
+    const std::string depends = field("Depends");
+    MESSAGE("Depends: " << depends);
+    // Each entry is "package" or "package (>= version)"; dpkg-shlibdeps found them from the links.
+    std::set<std::string> packages;
+    std::istringstream entries(depends);
+    for (std::string entry; std::getline(entries >> std::ws, entry, ',');) {
+        packages.insert(entry.substr(0, entry.find_first_of(" \n")));
+    }
+    for (const std::string package : {"libembree3-3", "libtbb12", "libglfw3", "libopenexr-3-1-30", "libosmesa6",
+                                      "libegl1", "libstdc++6", "libc6"}) {
+        CHECK_MESSAGE(packages.count(package) == 1, package);
+    }
 }
