@@ -206,7 +206,7 @@ void BenchCommand::run() const {
 void addBenchCommand(CLI::App& app) {
     auto command = std::make_shared<BenchCommand>();
     CLI::App* sub = app.add_subcommand(
-        "bench", "Measure run time against error, throughput against Embree's ceiling, and a peer");
+        "bench", "Measure error against time, and throughput");
     sub->add_option("scenes", command->scenes,
                     "Scenes (.obj); default: the bundled scenes, and ../shared/scenes/*/ when present");
     sub->add_flag("--quick", command->quick, "Small sizes and budgets (CI smoke run, < 3 min on 2 cores)");

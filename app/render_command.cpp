@@ -171,7 +171,7 @@ void RenderCommand::run() const {
 
 void addRenderCommand(CLI::App& app) {
     auto command = std::make_shared<RenderCommand>();
-    CLI::App* sub = app.add_subcommand("render", "Render a scene headless, progressively, to image files");
+    CLI::App* sub = app.add_subcommand("render", "Render headless, progressively, to image files");
     command->render.addTo(*sub);
     sub->add_option("--spp", command->spp, "Samples per pixel, a multiple of 24")->capture_default_str();
     sub->add_option("--out", command->outputs, "Output image(s): .exr/.pfm linear, .png sRGB (repeatable)");

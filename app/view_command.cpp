@@ -133,7 +133,7 @@ void ViewCommand::run() const {
 void addViewCommand(CLI::App& app) {
     auto command = std::make_shared<ViewCommand>();
     CLI::App* sub = app.add_subcommand(
-        "view", "Interactive progressive viewer (bundled Cornell box when no scene is given)");
+        "view", "Open the interactive progressive viewer");
     command->render.addTo(*sub);
     sub->add_option("--headless", command->headless,
                     "Run offscreen: egl (surfaceless Mesa) or osmesa; bare --headless tries both")
