@@ -13,7 +13,11 @@
 #include "view_command.h"
 
 int main(int argc, char** argv) {
-    CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator");
+    // Named, so that usage lines say `strata` rather than the path it was started by.
+    CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator", "strata");
+    app.set_version_flag("--version", STRATA_VERSION_TEXT, "Print the version and exit");
+    app.footer("With no scene, render and view show the bundled Cornell box.\n"
+               "`strata COMMAND --help` lists a command's options.");
     app.require_subcommand(1);
     strata::addBenchCommand(app);
     strata::addRenderCommand(app);
@@ -30,9 +34,7 @@ int main(int argc, char** argv) {
     }
     try {
         app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
+    } catch (const CLI::Success& e) {  // --help, --version
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "strata: %s (see --help)\n", e.what());

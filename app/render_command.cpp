@@ -167,8 +167,8 @@ void RenderCommand::run() const {
 
 void addRenderCommand(CLI::App& app) {
     auto command = std::make_shared<RenderCommand>();
-    CLI::App* sub = app.add_subcommand("render", "Render a scene headless, progressively, to image files");
-    command->render.addTo(*sub, true);
+    CLI::App* sub = app.add_subcommand("render", "Render headless, progressively, to image files");
+    command->render.addTo(*sub);
     sub->add_option("--spp", command->spp, "Samples per pixel, a multiple of 24")->capture_default_str();
     sub->add_option("--out", command->outputs, "Output image(s): .exr/.pfm linear, .png sRGB (repeatable)");
     sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();

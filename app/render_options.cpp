@@ -4,15 +4,17 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bundled_assets.h"
 #include "util/error.h"
 #include "integrator/truncation.h"
 
 namespace strata {
 
-void RenderOptions::addTo(CLI::App& command, bool sceneRequired) {
-    auto* sceneOption = command.add_option(
-        "scene", scene, "Scene file (" + knownSceneExtensions() + "; camera and lights from NAME.json beside it)");
-    if (sceneRequired) sceneOption->required();
+void RenderOptions::addTo(CLI::App& command) {
+    command.add_option("scene", scene,
+                       "Scene file (" + knownSceneExtensions() +
+                           "; camera and lights from NAME.json beside it; default: the bundled "
+                           "Cornell box)");
     command.add_option("--camera", cameraFile, "Camera JSON (default: NAME.json beside the scene; lights stay the scene's)");
     command.add_option("--width", width, "Image width (default: from the camera file)");
     command.add_option("--height", height, "Image height (default: from the camera file)");
@@ -115,7 +117,8 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
 SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneBundle(scene, cameraPath);
+    return strata::readSceneBundle(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
+                                   cameraPath);
 }
 
 Environment RenderOptions::environment() const {

@@ -16,7 +16,7 @@
 namespace strata {
 
 struct RenderOptions {
-    std::string scene;
+    std::string scene;  // empty: the bundled Cornell box
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
@@ -32,8 +32,8 @@ struct RenderOptions {
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
 
-    // Registers the options; `sceneRequired` makes the positional SCENE mandatory.
-    void addTo(CLI::App& command, bool sceneRequired);
+    // Registers the optional SCENE and the options on `command`.
+    void addTo(CLI::App& command);
     // The command-line arguments that addTo parses back into these options (the scene first).
     std::vector<std::string> arguments() const;
     // Validated settings for the renderer, the depth from --epsilon when given (logged on

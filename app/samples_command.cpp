@@ -41,7 +41,7 @@ struct SamplesCommand {
 void addSamplesCommand(CLI::App& app) {
     auto command = std::make_shared<SamplesCommand>();
     CLI::App* sub = app.add_subcommand(
-        "samples", "Print one pixel's sampled directions as CSV: pass,path,bounce,stratum,x,y,z");
+        "samples", "Print a pixel's sampled directions as CSV");
     sub->add_option("--sampler", command->sampler, "Sampler: " + samplerNames())->capture_default_str();
     sub->add_option("--passes", command->passes, "Passes of 24 paths")->capture_default_str();
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();

@@ -29,15 +29,6 @@ struct ViewCommand {
     void run() const;
 };
 
-std::filesystem::path defaultScene() {
-    const std::filesystem::path cornell = std::filesystem::path(STRATA_ASSETS_DIR) / "cornell" / "cornell.obj";
-    if (!std::filesystem::is_regular_file(cornell)) {
-        throw Error("view: no scene given and the bundled " + cornell.string() +
-                    " is missing (the program was built from another source tree); pass SCENE.obj");
-    }
-    return cornell;
-}
-
 void ViewCommand::run() const {
     if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
@@ -52,9 +43,7 @@ void ViewCommand::run() const {
     }
     if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
 
-    RenderOptions options = render;
-    if (options.scene.empty()) options.scene = defaultScene().string();
-    auto scene = std::make_shared<const LoadedScene>(options.loadScene());
+    auto scene = std::make_shared<const LoadedScene>(render.loadScene());
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n", describeScene(*scene).c_str());
     if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
@@ -140,8 +129,8 @@ void ViewCommand::run() const {
 void addViewCommand(CLI::App& app) {
     auto command = std::make_shared<ViewCommand>();
     CLI::App* sub = app.add_subcommand(
-        "view", "Interactive progressive viewer (bundled Cornell box when no scene is given)");
-    command->render.addTo(*sub, false);
+        "view", "Open the interactive progressive viewer");
+    command->render.addTo(*sub);
     sub->add_option("--headless", command->headless,
                     "Run offscreen: egl (surfaceless Mesa) or osmesa; bare --headless tries both")
         ->expected(0, 1)

@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
   python3-glad xvfb xauth gnuplot-nox embree-tools clang libclang-rt-14-dev
+  dpkg-dev  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -14,6 +14,7 @@
 #include "bench/bench_ranks.h"
 #include "bench/bench_throughput.h"
 #include "bench/bench_viewer.h"
+#include "bundled_assets.h"
 #include "sampling/direction_sampler.h"
 #include "util/error.h"
 #include "integrator/progressive_renderer.h"
@@ -42,16 +43,9 @@ struct BenchCommand {
     void run() const;
 };
 
-// The repository's root: the working directory if it holds assets/, else the nearest ancestor of
-// the executable that does (so `build/app/strata bench` works from anywhere).
-fs::path repositoryRoot() {
-    if (fs::is_directory("assets")) return fs::current_path();
-    for (fs::path p = fs::read_symlink("/proc/self/exe").parent_path(); p.has_relative_path();
-         p = p.parent_path()) {
-        if (fs::is_directory(p / "assets")) return p;
-    }
-    throw Error("cannot find the bundled assets/ folder; run from the repository or give scenes");
-}
+// The shared scene collection: an optional extra for the full suite, read when the working
+// directory has a sibling shared/ (a checkout beside the collection, run from its root).
+const fs::path kSharedScenes = fs::path("..") / "shared" / "scenes";
 
 // Every FOLDER/*/*.obj, sorted.
 std::vector<fs::path> scenesIn(const fs::path& folder) {
@@ -114,7 +108,7 @@ void BenchCommand::run() const {
     if (!reference.empty() && !fs::is_regular_file(reference)) {
         throw Error("--reference " + reference + ": no such file");
     }
-    const fs::path root = scenes.empty() ? repositoryRoot() : fs::path();
+    const fs::path bundled = scenes.empty() ? bundledAssetsDir() : fs::path();
     const fs::path out = outDir;
     fs::create_directories(out);
     const auto start = std::chrono::steady_clock::now();
@@ -127,12 +121,12 @@ void BenchCommand::run() const {
         // CI's quick run keeps to the bundled Cornell box and furnace (the glossy scene's
         // material-blind samplers are firefly-bound at quick budgets, so its curves say little
         // there); the full suite adds every bundled and shared scene.
-        for (const auto& s : scenesIn(root / "assets")) {
+        for (const auto& s : scenesIn(bundled)) {
             const auto name = s.stem().string();
             if (!quick || name == "cornell" || name == "furnace") convergence.scenes.push_back(s);
         }
         if (!quick) {
-            for (const auto& s : scenesIn(root / ".." / "shared" / "scenes")) convergence.scenes.push_back(s);
+            for (const auto& s : scenesIn(kSharedScenes)) convergence.scenes.push_back(s);
         }
     }
     convergence.samplers = allSamplers();
@@ -157,10 +151,10 @@ void BenchCommand::run() const {
 
     if (!skipThroughput) {
         ThroughputSettings throughput;
-        const fs::path shared = root / ".." / "shared" / "scenes" / "cornell" / "scene.obj";
+        const fs::path shared = kSharedScenes / "cornell" / "scene.obj";
         throughput.scene = !scenes.empty() ? fs::path(scenes.front())
                            : (!quick && fs::is_regular_file(shared)) ? shared
-                                                                     : root / "assets" / "cornell" / "cornell.obj";
+                                                                     : bundledScene("cornell");
         throughput.depth = depths.front();
         throughput.threads = threads;
         throughput.quick = quick;
@@ -170,8 +164,7 @@ void BenchCommand::run() const {
     }
     if (vsEmbree) {
         PeerSettings peer;
-        peer.scene = (scenes.empty() ? root : repositoryRoot()) / ".." / "shared" / "scenes" /
-                     "cornell_point" / "scene.obj";
+        peer.scene = kSharedScenes / "cornell_point" / "scene.obj";
         peer.depth = depths.front();
         peer.spp = quick ? 24 : 96;
         peer.repeats = quick ? 1 : 3;
@@ -181,7 +174,7 @@ void BenchCommand::run() const {
     }
     if (!skipThroughput) {
         ViewerBenchSettings viewer;
-        viewer.scene = root.empty() ? fs::path(scenes.front()) : root / "assets" / "cornell" / "cornell.obj";
+        viewer.scene = scenes.empty() ? bundledScene("cornell") : fs::path(scenes.front());
         viewer.depth = depths.front();
         viewer.threads = threads;
         viewer.outDir = out;
@@ -194,7 +187,7 @@ void BenchCommand::run() const {
     }
     if (!quick) {
         RankSettings ranks;
-        ranks.scene = root / "assets" / "cornell" / "cornell.obj";
+        ranks.scene = bundledScene("cornell");
         ranks.depth = depths.front();
         ranks.threads = threads;
         ranks.outDir = out;
@@ -213,9 +206,9 @@ void BenchCommand::run() const {
 void addBenchCommand(CLI::App& app) {
     auto command = std::make_shared<BenchCommand>();
     CLI::App* sub = app.add_subcommand(
-        "bench", "Measure run time against error, throughput against Embree's ceiling, and a peer");
+        "bench", "Measure error against time, and throughput");
     sub->add_option("scenes", command->scenes,
-                    "Scenes (.obj); default: assets/*/ and ../shared/scenes/*/");
+                    "Scenes (.obj); default: the bundled scenes, and ../shared/scenes/*/ when present");
     sub->add_flag("--quick", command->quick, "Small sizes and budgets (CI smoke run, < 3 min on 2 cores)");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
     sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();

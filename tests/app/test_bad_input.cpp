@@ -124,7 +124,6 @@ const std::vector<BadInputCase> kCliCases = {
     {"--camera file missing", {}, "render {dir}/s.obj --camera {dir}/none.json",
      "none.json: cannot open camera file"},
     // strata render options
-    {"render without a scene", {}, "render", "scene is required"},
     {"render --spp not a multiple of 24", {}, "render {dir}/s.obj --spp 25", "--spp: must be a positive multiple of 24"},
     {"render --spp 0", {}, "render {dir}/s.obj --spp 0", "--spp: must be a positive multiple of 24"},
     {"render --spp not a number", {}, "render {dir}/s.obj --spp many", "--spp"},
