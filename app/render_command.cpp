@@ -58,7 +58,7 @@ void RenderCommand::run() const {
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
-        std::fprintf(stderr, "%s\n", describeScene(loaded).c_str());
+        std::fprintf(stderr, "%s\n%s", describeScene(loaded).c_str(), describeWarnings(loaded).c_str());
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
                          "note: the scene's point lights need --nee; without it they are dark\n");

@@ -60,7 +60,7 @@ void ViewCommand::run() const {
     if (options.scene.empty()) options.scene = defaultScene().string();
     auto scene = std::make_shared<const LoadedScene>(options.loadScene());
     const RenderSettings settings = render.renderSettings(*scene);
-    std::fprintf(stderr, "%s\n", describeScene(*scene).c_str());
+    std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
