@@ -45,7 +45,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
         const size_t warnings = scene_->report.warnings.size();
         std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
         panel_.setMessage("opened " + path.string() +
-                          (warnings ? " (" + std::to_string(warnings) + " warnings on stderr)" : ""));
+                          (warnings ? " (warnings on stderr: " + std::to_string(warnings) + ")" : ""));
     } catch (const std::exception& e) {
         panel_.setMessage(std::string("cannot open scene: ") + e.what());
     }

@@ -64,7 +64,7 @@ NumberKind classifyNumber(std::string_view word) {
                                                                  : NumberKind::OutOfRange;
 }
 
-// The 32-bit float of a word classifyNumber accepted (Finite or NonFinite).
+// The value of a word classifyNumber accepted (Finite or NonFinite), rounded to a 32-bit float.
 double floatOf(std::string_view word) {
     if (word.front() == '+') word.remove_prefix(1);
     double value = 0.0;
@@ -216,7 +216,9 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
                     checkIndex(name, line, (*corner)[1], textureCoordinates, "texture coordinate",
                                "texture coordinates");
                 }
-                if ((*corner)[2] != 0) checkIndex(name, line, (*corner)[2], scan.normals.size(), "normal", "normals");
+                if ((*corner)[2] != 0) {
+                    checkIndex(name, line, (*corner)[2], scan.normals.size(), "normal", "normals");
+                }
             }
         } else if (key == "mtllib") {
             if (words.size() < 2) {
@@ -226,6 +228,12 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
         }
     });
     return scan;
+}
+
+// Appends a line as the checks read it: its words, without the comment.
+void appendLine(std::string& text, const std::vector<std::string_view>& words) {
+    for (const std::string_view word : words) (text += word) += ' ';
+    text.back() = '\n';
 }
 
 struct MtlMaterial {
@@ -263,9 +271,7 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
         if (key == "Pr") materials.back().hasRoughness = true;
-        // Its words, without the comment the checks did not read either.
-        for (const std::string_view word : words) (tinyobjText += word) += ' ';
-        tinyobjText.back() = '\n';
+        appendLine(tinyobjText, words);
     });
 }
 
@@ -298,8 +304,7 @@ std::string objForTinyobj(const std::string& text, const std::string& name,
                                                       : "material '" + material + "' is not defined") +
                                "; " + kDefaultMaterialNote);
         } else if (key == "v" || key == "vn" || key == "vt" || key == "f") {
-            for (const std::string_view word : words) (kept += word) += ' ';
-            kept.back() = '\n';
+            appendLine(kept, words);
         }
     });
     return kept;
@@ -309,6 +314,8 @@ bool isFinite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// The renderer's material of an MTL material as tinyobjloader read it; throws strata::Error
+// naming its newmtl line for values that are not physical.
 Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     Material material;
     material.name = source.name;
@@ -316,7 +323,8 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     material.emission = {m.emission[0], m.emission[1], m.emission[2]};
     material.specular = {m.specular[0], m.specular[1], m.specular[2]};
     material.roughness = source.hasRoughness ? m.roughness : roughnessFromShininess(m.shininess);
-    const std::string at = source.file + ":" + std::to_string(source.line) + ": material '" + source.name + "'";
+    const std::string at =
+        source.file + ":" + std::to_string(source.line) + ": material '" + source.name + "'";
     if (!isFinite(material.diffuse) || !isFinite(material.emission) || !isFinite(material.specular) ||
         !std::isfinite(material.roughness) ||
         glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
@@ -363,7 +371,9 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
     for (size_t v : scan.nonFiniteVertices) {
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
-    for (size_t i = 0; i < materials.size(); ++i) mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+    for (size_t i = 0; i < materials.size(); ++i) {
+        mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+    }
     // Faces without a material get the default; it is appended only when used.
     const auto defaultMaterial = static_cast<uint32_t>(mesh.materials.size());
     bool defaultUsed = false;
@@ -382,16 +392,20 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
         const auto& indices = shape.mesh.indices;
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
             std::array<uint32_t, 3> tri;
-            std::array<uint32_t, 3> normals;
+            std::array<uint32_t, 3> normals = kNoNormals;  // stays so on corners without vn
             bool cornersHaveNormals = true;
             for (size_t k = 0; k < 3; ++k) {
                 const tinyobj::index_t& corner = indices[3 * f + k];
                 tri[k] = static_cast<uint32_t>(corner.vertex_index);
-                if (tri[k] >= mesh.positions.size()) throw Error(objName + ": a face refers to a missing vertex");
+                if (tri[k] >= mesh.positions.size()) {
+                    throw Error(objName + ": a face refers to a missing vertex");
+                }
                 cornersHaveNormals = cornersHaveNormals && corner.normal_index >= 0;
                 if (corner.normal_index < 0) continue;
                 const auto normal = static_cast<size_t>(corner.normal_index);
-                if (normal >= normalIndex.size()) throw Error(objName + ": a face refers to a missing normal");
+                if (normal >= normalIndex.size()) {
+                    throw Error(objName + ": a face refers to a missing normal");
+                }
                 normals[k] = normalIndex[normal];
             }
             const glm::vec3& a = mesh.positions[tri[0]];
