@@ -45,7 +45,7 @@ void ViewCommand::run() const {
 
     auto scene = std::make_shared<const LoadedScene>(render.loadScene());
     const RenderSettings settings = render.renderSettings(scene->scene);
-    std::fprintf(stderr, "%s\n", describeScene(*scene).c_str());
+    std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
     if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
@@ -41,7 +42,10 @@ void Viewer::openScene(const std::filesystem::path& path) {
         scene_ = std::move(loaded);
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
         panel_.setScenePath(path.string());
-        panel_.setMessage("opened " + path.string());
+        const size_t warnings = scene_->report.warnings.size();
+        std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
+        panel_.setMessage("opened " + path.string() +
+                          (warnings ? " (warnings on stderr: " + std::to_string(warnings) + ")" : ""));
     } catch (const std::exception& e) {
         panel_.setMessage(std::string("cannot open scene: ") + e.what());
     }

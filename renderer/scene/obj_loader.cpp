@@ -1,9 +1,12 @@
 #include "scene/obj_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <vector>
@@ -18,6 +21,10 @@
 namespace strata {
 namespace {
 
+// What faces get when no material of the MTL files applies: the grey most tools use.
+constexpr float kDefaultAlbedo = 0.8f;
+const char* const kDefaultMaterialNote = "using grey Kd 0.8";
+
 std::vector<std::string_view> splitWords(std::string_view line) {
     std::vector<std::string_view> words;
     size_t i = 0;
@@ -29,6 +36,14 @@ std::vector<std::string_view> splitWords(std::string_view line) {
         i = j;
     }
     return words;
+}
+
+// A statement's words after its keyword as one name, the spaces around it trimmed: "usemtl Hard
+// Shiny Plastic" names "Hard Shiny Plastic", as assimp and Blender read it.
+std::string restOfLine(const std::vector<std::string_view>& words) {
+    if (words.size() < 2) return {};
+    const char* end = words.back().data() + words.back().size();
+    return std::string(words[1].data(), end);
 }
 
 enum class NumberKind { Finite, NonFinite, OutOfRange, Invalid };
@@ -49,42 +64,60 @@ NumberKind classifyNumber(std::string_view word) {
                                                                  : NumberKind::OutOfRange;
 }
 
-bool isInteger(std::string_view word) {
-    long value;
-    const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
-    return result.ec == std::errc() && result.ptr == word.data() + word.size() && value != 0;
+// The value of a word classifyNumber accepted (Finite or NonFinite), rounded to a 32-bit float.
+double floatOf(std::string_view word) {
+    if (word.front() == '+') word.remove_prefix(1);
+    double value = 0.0;
+    std::from_chars(word.data(), word.data() + word.size(), value);
+    return static_cast<float>(value);
 }
 
-// A face corner: v, v/vt, v//vn or v/vt/vn, with non-zero (possibly negative) integers.
-bool isFaceCorner(std::string_view word) {
-    std::vector<std::string_view> parts;
+// A face corner's indices: v, v/vt, v//vn or v/vt/vn, each a non-zero (possibly negative)
+// integer; an absent vt or vn is 0. Empty when the word is not a face corner.
+std::optional<std::array<long, 3>> faceCorner(std::string_view word) {
+    std::array<long, 3> indices{0, 0, 0};
+    size_t part = 0;
     size_t start = 0;
     for (size_t i = 0; i <= word.size(); ++i) {
-        if (i == word.size() || word[i] == '/') {
-            parts.push_back(word.substr(start, i - start));
-            start = i + 1;
+        if (i < word.size() && word[i] != '/') continue;
+        if (part == indices.size()) return std::nullopt;
+        const std::string_view text = word.substr(start, i - start);
+        if (part == 0 || !text.empty()) {
+            const auto result = std::from_chars(text.data(), text.data() + text.size(), indices[part]);
+            if (result.ec != std::errc() || result.ptr != text.data() + text.size() || indices[part] == 0) {
+                return std::nullopt;
+            }
         }
+        ++part;
+        start = i + 1;
     }
-    if (parts.size() > 3 || !isInteger(parts[0])) return false;
-    for (size_t i = 1; i < parts.size(); ++i) {
-        if (!parts[i].empty() && !isInteger(parts[i])) return false;
-    }
-    return true;
+    return indices;
 }
 
 [[noreturn]] void failAt(const std::string& name, size_t line, const std::string& message) {
     throw Error(name + ":" + std::to_string(line) + ": " + message);
 }
 
+// A UTF-8 text without its byte-order mark; UTF-16 (which some Windows tools write) is refused
+// by name, where it would otherwise read as lines of unknown statements.
+std::string_view withoutByteOrderMark(const std::string& text, const std::string& name) {
+    const std::string_view view(text);
+    if (view.substr(0, 2) == "\xFE\xFF" || view.substr(0, 2) == "\xFF\xFE") {
+        throw Error(name + ": the file is UTF-16 text; save it as UTF-8 or ASCII");
+    }
+    return view.substr(0, 3) == "\xEF\xBB\xBF" ? view.substr(3) : view;
+}
+
 template <typename Visit>
-void forEachLine(const std::string& text, Visit visit) {
+void forEachLine(const std::string& file, const std::string& name, Visit visit) {
+    const std::string_view text = withoutByteOrderMark(file, name);
     size_t lineNumber = 0;
     size_t start = 0;
     while (start <= text.size()) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         ++lineNumber;
-        std::string_view line(text.data() + start, end - start);
+        std::string_view line = text.substr(start, end - start);
         if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         const auto words = splitWords(line);
         if (!words.empty()) visit(lineNumber, words);
@@ -119,90 +152,161 @@ bool checkNumbers(const std::string& name, size_t line, const std::vector<std::s
     return finite;
 }
 
+// Checks a face corner's index into the `count` v, vt or vn lines read so far (a negative one
+// counts back from the last).
+void checkIndex(const std::string& name, size_t line, long index, size_t count, const char* what,
+                const char* plural) {
+    const long resolved = index > 0 ? index : static_cast<long>(count) + 1 + index;
+    if (resolved < 1 || resolved > static_cast<long>(count)) {
+        failAt(name, line, std::string(what) + " index " + std::to_string(index) + " is out of range (" +
+                               std::to_string(count) + " " + plural + " so far)");
+    }
+}
+
+// A vn line's direction at unit length (normalised in double, so that no float over- or
+// underflows), or NaN when it has none: zero or not finite.
+glm::vec3 unitNormal(const std::vector<std::string_view>& words) {
+    const glm::dvec3 n(floatOf(words[1]), floatOf(words[2]), floatOf(words[3]));
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(std::numeric_limits<float>::quiet_NaN());
+    return glm::vec3(n / length);
+}
+
+struct NamedLine {
+    std::string name;
+    size_t line = 0;
+};
+
 struct ObjScan {
-    std::vector<std::string> libraries;     // mtllib file names
+    std::vector<NamedLine> libraries;       // mtllib file names and their lines
     std::vector<size_t> nonFiniteVertices;  // 0-based indices of vertices with a nan/inf coordinate
+    // Every vn in order, at unit length, NaN for one without a direction; tinyobjloader would read
+    // "nan" as 0, so its own normals cannot tell.
+    std::vector<glm::vec3> normals;
+    size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
+    std::vector<std::string> warnings;
 };
 
 ObjScan validateObj(const std::string& text, const std::string& name) {
     ObjScan scan;
     size_t vertices = 0;
-    forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
+    size_t textureCoordinates = 0;
+    forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "v") {
             // x y z [w] or x y z r g b
             if (!checkNumbers(name, line, words, 3, 7, true)) scan.nonFiniteVertices.push_back(vertices);
             ++vertices;
         } else if (key == "vn") {
-            checkNumbers(name, line, words, 3, 3);
+            checkNumbers(name, line, words, 3, 3, true);
+            scan.normals.push_back(unitNormal(words));
+            if (std::isnan(scan.normals.back().x) && scan.firstUnusableNormalLine == 0) {
+                scan.firstUnusableNormalLine = line;
+            }
         } else if (key == "vt") {
             checkNumbers(name, line, words, 1, 3);
+            ++textureCoordinates;
         } else if (key == "f") {
             if (words.size() < 4) failAt(name, line, "a face needs at least 3 vertices");
             for (size_t i = 1; i < words.size(); ++i) {
-                if (!isFaceCorner(words[i])) {
-                    failAt(name, line, "'" + std::string(words[i]) + "' is not a face vertex");
+                const auto corner = faceCorner(words[i]);
+                if (!corner) failAt(name, line, "'" + std::string(words[i]) + "' is not a face vertex");
+                checkIndex(name, line, (*corner)[0], vertices, "vertex", "vertices");
+                if ((*corner)[1] != 0) {
+                    checkIndex(name, line, (*corner)[1], textureCoordinates, "texture coordinate",
+                               "texture coordinates");
                 }
-                long index = 0;
-                std::from_chars(words[i].data(), words[i].data() + words[i].size(), index);
-                const long resolved = index > 0 ? index : static_cast<long>(vertices) + 1 + index;
-                if (resolved < 1 || resolved > static_cast<long>(vertices)) {
-                    failAt(name, line, "vertex index " + std::to_string(index) +
-                                           " is out of range (" + std::to_string(vertices) +
-                                           " vertices so far)");
+                if ((*corner)[2] != 0) {
+                    checkIndex(name, line, (*corner)[2], scan.normals.size(), "normal", "normals");
                 }
             }
         } else if (key == "mtllib") {
-            if (words.size() < 2) failAt(name, line, "mtllib needs a file name");
-            for (size_t i = 1; i < words.size(); ++i) scan.libraries.emplace_back(words[i]);
-        } else if (key == "usemtl") {
-            if (words.size() != 2) failAt(name, line, "usemtl needs one material name");
+            if (words.size() < 2) {
+                scan.warnings.push_back(name + ":" + std::to_string(line) + ": mtllib names no file");
+            }
+            for (size_t i = 1; i < words.size(); ++i) scan.libraries.push_back({std::string(words[i]), line});
         }
     });
     return scan;
 }
 
-// Returns the names of the materials that give a roughness Pr (the others take it from Ns:
-// tinyobjloader reads an absent Pr as 0, which cannot be told from an explicit 0).
-std::set<std::string> validateMtl(const std::string& text, const std::string& name) {
-    bool inMaterial = false;
-    std::string material;
-    std::set<std::string> withRoughness;
-    forEachLine(text, [&](size_t line, const std::vector<std::string_view>& words) {
+// Appends a line as the checks read it: its words, without the comment.
+void appendLine(std::string& text, const std::vector<std::string_view>& words) {
+    for (const std::string_view word : words) (text += word) += ' ';
+    text.back() = '\n';
+}
+
+struct MtlMaterial {
+    std::string name;  // the whole rest of its newmtl line
+    std::string file;  // as messages name it
+    size_t line = 0;   // of its newmtl
+    // Whether it gives a roughness Pr (else it comes from Ns: tinyobjloader reads an absent Pr as
+    // 0, which cannot be told from an explicit 0).
+    bool hasRoughness = false;
+};
+
+// The MTL text as tinyobjloader is to read it, built by scanMtl: each newmtl names its material
+// by its place among all the materials ("m0", "m1", ...), a name tinyobjloader reads whole and
+// which a usemtl can refer to however the material is named.
+std::string materialToken(size_t index) { return "m" + std::to_string(index); }
+
+// Checks an MTL file line by line and appends its materials to `materials` and its text, as
+// tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
+// uses are checked; the others (Ka, Tf, Ni, d, illum, map_Kd -bm 1.0 ...) pass as they are.
+void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
+             std::string& tinyobjText) {
+    const size_t first = materials.size();
+    forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "newmtl") {
-            if (words.size() != 2) failAt(name, line, "newmtl needs one material name");
-            inMaterial = true;
-            material = std::string(words[1]);
+            tinyobjText += "newmtl " + materialToken(materials.size()) + "\n";
+            materials.push_back({restOfLine(words), name, line});
             return;
         }
-        if (key == "Pr" && inMaterial) withRoughness.insert(material);
-        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Ka" ||
-                            key == "Tf" || key == "Kt";
-        const bool scalar = key == "Ns" || key == "Ni" || key == "d" || key == "Tr" ||
-                            key == "Pr" || key == "Pm" || key == "illum";
-        if ((colour || scalar) && !inMaterial) {
+        const bool colour = key == "Kd" || key == "Ke" || key == "Ks";
+        const bool scalar = key == "Ns" || key == "Pr";
+        if ((colour || scalar) && materials.size() == first) {
             failAt(name, line, "'" + std::string(key) + "' before any newmtl");
         }
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
+        if (key == "Pr") materials.back().hasRoughness = true;
+        appendLine(tinyobjText, words);
     });
-    return withRoughness;
 }
 
-// The text with every comment ('#' to the end of its line) removed, as forEachLine reads it.
-std::string withoutComments(const std::string& text) {
-    std::string kept;
-    kept.reserve(text.size());
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        const std::string_view line(text.data() + start, end - start);
-        kept.append(line.substr(0, line.find('#')));
-        if (end < text.size()) kept += '\n';
-        start = end + 1;
-    }
+// The OBJ as tinyobjloader is to read it: only the statements the checks read, as they read them.
+// Comments go, since tinyobjloader reads '#' as a comment only at the start of a line ("f 1 2 3
+// # 5" would read a face the checks never saw, a fuzzer finding: an index past the last vertex
+// read out of bounds). One mtllib comes first, so that every material is known to every usemtl,
+// and each usemtl names its material by token (its first definition), or none when no MTL
+// defines it: those faces get the default material and a warning, once per name.
+std::string objForTinyobj(const std::string& text, const std::string& name,
+                          const std::vector<MtlMaterial>& materials, std::vector<std::string>& warnings) {
+    std::map<std::string, size_t> byName;
+    for (size_t i = 0; i < materials.size(); ++i) byName.emplace(materials[i].name, i);
+    std::set<std::string> undefined;
+    std::string kept = materials.empty() ? "" : "mtllib materials.mtl\n";
+    forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
+        const std::string_view key = words[0];
+        if (key == "usemtl") {
+            // An empty name is no material, even when an MTL has a newmtl without a name.
+            const std::string material = restOfLine(words);
+            const auto found = material.empty() ? byName.end() : byName.find(material);
+            if (found != byName.end()) {
+                kept += "usemtl " + materialToken(found->second) + "\n";
+                return;
+            }
+            kept += "usemtl\n";
+            if (!undefined.insert(material).second) return;
+            const std::string at = name + ":" + std::to_string(line) + ": ";
+            warnings.push_back(at + (material.empty() ? "usemtl names no material"
+                                                      : "material '" + material + "' is not defined") +
+                               "; " + kDefaultMaterialNote);
+        } else if (key == "v" || key == "vn" || key == "vt" || key == "f") {
+            appendLine(kept, words);
+        }
+    });
     return kept;
 }
 
@@ -210,27 +314,51 @@ bool isFinite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// Builds the mesh from text that validateObj and validateMtl have accepted.
-MeshData buildMesh(const std::string& objText, const std::string& objName,
-                   const std::string& mtlText, const std::string& mtlName, const ObjScan& scan,
-                   const std::set<std::string>& withRoughness, LoadReport* report) {
+// The renderer's material of an MTL material as tinyobjloader read it; throws strata::Error
+// naming its newmtl line for values that are not physical.
+Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
+    Material material;
+    material.name = source.name;
+    material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+    material.emission = {m.emission[0], m.emission[1], m.emission[2]};
+    material.specular = {m.specular[0], m.specular[1], m.specular[2]};
+    material.roughness = source.hasRoughness ? m.roughness : roughnessFromShininess(m.shininess);
+    const std::string at =
+        source.file + ":" + std::to_string(source.line) + ": material '" + source.name + "'";
+    if (!isFinite(material.diffuse) || !isFinite(material.emission) || !isFinite(material.specular) ||
+        !std::isfinite(material.roughness) ||
+        glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
+        glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f ||
+        glm::min(glm::min(material.specular.x, material.specular.y), material.specular.z) < 0.0f) {
+        throw Error(at + " has a negative or non-finite Kd, Ke, Ks or Pr");
+    }
+    if (glm::max(glm::max(material.diffuse.x, material.diffuse.y), material.diffuse.z) > 1.0f) {
+        throw Error(at + " has Kd above 1 (creates energy)");
+    }
+    if (glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 1.0f) {
+        throw Error(at + " has Ks above 1 (creates energy)");
+    }
+    if (material.roughness < 0.0f || material.roughness > 1.0f) throw Error(at + " has Pr outside 0..1");
+    return material;
+}
+
+// Builds the mesh from the OBJ that validateObj accepted and the MTL files scanMtl accepted
+// (`materials`, `mtlText`); `warnings` are those found so far.
+MeshData buildMesh(const std::string& objText, const std::string& objName, const ObjScan& scan,
+                   const std::vector<MtlMaterial>& materials, const std::string& mtlText,
+                   std::vector<std::string> warnings, LoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    // tinyobjloader reads '#' as a comment only at the start of a line; the checks above read it
-    // anywhere. It must parse what was checked, or "f 1 2 3 # 5" reads a face the checks never saw
-    // (a fuzzer finding: an index past the last vertex read out of bounds).
-    if (!reader.ParseFromString(withoutComments(objText), withoutComments(mtlText), config)) {
+    if (!reader.ParseFromString(objForTinyobj(objText, objName, materials, warnings), mtlText, config)) {
         std::string error = reader.Error();
         while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
         throw Error(objName + ": " + (error.empty() ? "cannot parse" : error));
     }
-    // tinyobjloader reports a usemtl of an undefined material only as a warning; it is an error
-    // here, since the faces would silently lose their material.
-    if (const auto& warning = reader.Warning(); warning.find("material [") != std::string::npos) {
-        const auto end = warning.find('\n');
-        throw Error(objName + ": " + warning.substr(0, end) + " in " + mtlName);
+    // The guards below catch only tinyobjloader reading its text differently from the checks.
+    if (reader.GetMaterials().size() != materials.size()) {
+        throw Error(objName + ": the material libraries were read inconsistently");
     }
 
     MeshData mesh;
@@ -243,48 +371,42 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
     for (size_t v : scan.nonFiniteVertices) {
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
-    for (const auto& m : reader.GetMaterials()) {
-        Material material;
-        material.name = m.name;
-        material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
-        material.emission = {m.emission[0], m.emission[1], m.emission[2]};
-        material.specular = {m.specular[0], m.specular[1], m.specular[2]};
-        material.roughness = withRoughness.count(m.name) ? m.roughness
-                                                         : roughnessFromShininess(m.shininess);
-        if (!isFinite(material.diffuse) || !isFinite(material.emission) ||
-            !isFinite(material.specular) || !std::isfinite(material.roughness) ||
-            glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
-            glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f ||
-            glm::min(glm::min(material.specular.x, material.specular.y), material.specular.z) < 0.0f) {
-            throw Error(mtlName + ": material '" + m.name +
-                        "' has a negative or non-finite Kd, Ke, Ks or Pr");
-        }
-        if (glm::max(glm::max(material.diffuse.x, material.diffuse.y), material.diffuse.z) > 1.0f) {
-            throw Error(mtlName + ": material '" + m.name + "' has Kd above 1 (creates energy)");
-        }
-        if (glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 1.0f) {
-            throw Error(mtlName + ": material '" + m.name + "' has Ks above 1 (creates energy)");
-        }
-        if (material.roughness < 0.0f || material.roughness > 1.0f) {
-            throw Error(mtlName + ": material '" + m.name + "' has Pr outside 0..1");
-        }
-        mesh.materials.push_back(material);
+    for (size_t i = 0; i < materials.size(); ++i) {
+        mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
     }
-    // Faces without a material get a neutral grey; it is appended only when used.
+    // Faces without a material get the default; it is appended only when used.
     const auto defaultMaterial = static_cast<uint32_t>(mesh.materials.size());
     bool defaultUsed = false;
+    // The vn lines with a direction, renumbered; a corner on one without is kUnusable.
+    constexpr uint32_t kUnusable = UINT32_MAX;
+    std::vector<uint32_t> normalIndex;
+    for (const glm::vec3& n : scan.normals) {
+        normalIndex.push_back(std::isnan(n.x) ? kUnusable : static_cast<uint32_t>(mesh.normals.size()));
+        if (!std::isnan(n.x)) mesh.normals.push_back(n);
+    }
+    bool anySmooth = false;
+    size_t flatForUnusableNormals = 0;
 
     size_t dropped = 0;
     for (const auto& shape : reader.GetShapes()) {
         const auto& indices = shape.mesh.indices;
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            const std::array<uint32_t, 3> tri{static_cast<uint32_t>(indices[3 * f].vertex_index),
-                                              static_cast<uint32_t>(indices[3 * f + 1].vertex_index),
-                                              static_cast<uint32_t>(indices[3 * f + 2].vertex_index)};
-            // validateObj checked every index, so this guards only against tinyobjloader reading
-            // a line differently from it.
-            for (uint32_t index : tri) {
-                if (index >= mesh.positions.size()) throw Error(objName + ": a face refers to a missing vertex");
+            std::array<uint32_t, 3> tri;
+            std::array<uint32_t, 3> normals = kNoNormals;  // stays so on corners without vn
+            bool cornersHaveNormals = true;
+            for (size_t k = 0; k < 3; ++k) {
+                const tinyobj::index_t& corner = indices[3 * f + k];
+                tri[k] = static_cast<uint32_t>(corner.vertex_index);
+                if (tri[k] >= mesh.positions.size()) {
+                    throw Error(objName + ": a face refers to a missing vertex");
+                }
+                cornersHaveNormals = cornersHaveNormals && corner.normal_index >= 0;
+                if (corner.normal_index < 0) continue;
+                const auto normal = static_cast<size_t>(corner.normal_index);
+                if (normal >= normalIndex.size()) {
+                    throw Error(objName + ": a face refers to a missing normal");
+                }
+                normals[k] = normalIndex[normal];
             }
             const glm::vec3& a = mesh.positions[tri[0]];
             const glm::vec3& b = mesh.positions[tri[1]];
@@ -295,6 +417,14 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
                 ++dropped;
                 continue;
             }
+            // A face without vn on every corner is flat, as is one on a normal without a direction.
+            const bool usable = std::none_of(normals.begin(), normals.end(),
+                                             [&](uint32_t i) { return i == kUnusable; });
+            flatForUnusableNormals += cornersHaveNormals && !usable;
+            const bool smooth = cornersHaveNormals && usable;
+            anySmooth = anySmooth || smooth;
+            mesh.triangleNormals.push_back(smooth ? normals : kNoNormals);
+
             const int materialId = shape.mesh.material_ids[f];
             uint32_t material = defaultMaterial;
             if (materialId >= 0) {
@@ -306,11 +436,24 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
             mesh.triangleMaterials.push_back(material);
         }
     }
-    if (defaultUsed) mesh.materials.push_back({"(default)", glm::vec3(0.5f), glm::vec3(0.0f)});
+    if (defaultUsed) mesh.materials.push_back({"default", glm::vec3(kDefaultAlbedo), glm::vec3(0.0f)});
+    // No triangle is smooth: the mesh says so by having no normals at all (mesh.h).
+    if (!anySmooth) {
+        mesh.normals.clear();
+        mesh.triangleNormals.clear();
+    }
+    if (flatForUnusableNormals > 0) {
+        warnings.push_back(objName + ":" + std::to_string(scan.firstUnusableNormalLine) +
+                           ": vn is zero or not finite; " + std::to_string(flatForUnusableNormals) +
+                           (flatForUnusableNormals == 1 ? " triangle using such a normal is"
+                                                        : " triangles using such normals are") +
+                           " shaded flat");
+    }
     if (report) {
         report->faces = mesh.triangles.size();
         report->droppedTriangles = dropped;
         report->nonFiniteVertices = scan.nonFiniteVertices.size();
+        report->warnings = std::move(warnings);
     }
     return mesh;
 }
@@ -320,17 +463,26 @@ MeshData buildMesh(const std::string& objText, const std::string& objName,
 MeshData parseObj(const std::string& objText, const std::string& objName,
                   const std::string& mtlText, const std::string& mtlName, LoadReport* report) {
     const ObjScan scan = validateObj(objText, objName);
-    return buildMesh(objText, objName, mtlText, mtlName, scan, validateMtl(mtlText, mtlName), report);
+    std::vector<MtlMaterial> materials;
+    std::string tinyobjMtl;
+    // Checked in any case, so that a test of MTL lines needs no OBJ to load them.
+    scanMtl(mtlText, mtlName, materials, tinyobjMtl);
+    if (scan.libraries.empty()) {
+        materials.clear();
+        tinyobjMtl.clear();
+    }
+    return buildMesh(objText, objName, scan, materials, tinyobjMtl, scan.warnings, report);
 }
 
 std::vector<SceneFile> readObjScene(const std::filesystem::path& path) {
     std::vector<SceneFile> files{{path.filename().string(), readTextFile(path, "scene")}};
     for (const auto& library : validateObj(files.front().bytes, path.string()).libraries) {
         const bool read = std::any_of(files.begin(), files.end(),
-                                      [&](const SceneFile& file) { return file.name == library; });
-        if (read) continue;
-        files.push_back({library, readTextFile(path.parent_path() / library,
-                                               "material library (named by mtllib)")});
+                                      [&](const SceneFile& file) { return file.name == library.name; });
+        // A missing library is left out: parsing warns and gives its faces the default material.
+        const auto file = path.parent_path() / library.name;
+        if (read || !std::filesystem::is_regular_file(file)) continue;
+        files.push_back({library.name, readTextFile(file, "material library (named by mtllib)")});
     }
     return files;
 }
@@ -339,25 +491,23 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report) {
     const SceneFile& obj = bundle.files.front();
     const std::string objName = bundle.pathOf(obj.name);
     const ObjScan scan = validateObj(obj.bytes, objName);
-    // Each MTL file is validated on its own, so that a bad line is reported with its file and line;
+    std::vector<std::string> warnings = scan.warnings;
+    // Each MTL file is checked on its own, so that a bad line is reported with its file and line;
     // tinyobjloader then reads them joined, as the OBJ's mtllib lines load them one after another.
-    // A file's material lines all follow a newmtl of its own (validateMtl), so the materials that
-    // give Pr in the joined text are those of the files together.
-    std::string mtlText;
-    std::string mtlName;
-    std::set<std::string> withRoughness;
+    std::vector<MtlMaterial> materials;
+    std::string tinyobjMtl;
+    std::set<std::string> scanned;
     for (const auto& library : scan.libraries) {
-        const std::string name = bundle.pathOf(library);
-        const SceneFile* mtl = bundle.find(library);
-        if (!mtl) throw Error(name + ": material library (named by mtllib) not among the scene's files");
-        withRoughness.merge(validateMtl(mtl->bytes, name));
-        mtlText += mtl->bytes;
-        mtlText += '\n';
-        if (!mtlName.empty()) mtlName += ',';
-        mtlName += name;
+        if (!scanned.insert(library.name).second) continue;
+        const SceneFile* mtl = bundle.find(library.name);
+        if (!mtl) {
+            warnings.push_back(objName + ":" + std::to_string(library.line) + ": material library '" +
+                               library.name + "' is missing; its materials are not defined");
+            continue;
+        }
+        scanMtl(mtl->bytes, bundle.pathOf(library.name), materials, tinyobjMtl);
     }
-    if (mtlName.empty()) mtlName = objName;
-    return buildMesh(obj.bytes, objName, mtlText, mtlName, scan, withRoughness, report);
+    return buildMesh(obj.bytes, objName, scan, materials, tinyobjMtl, std::move(warnings), report);
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, LoadReport* report) {

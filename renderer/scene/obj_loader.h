@@ -1,7 +1,10 @@
 #pragma once
 // The OBJ format (+ MTL) through tinyobjloader. tinyobjloader accepts almost anything (a malformed
 // number reads as 0), so each file is first checked line by line: a bad line is reported as
-// "FILE:LINE: what is wrong" rather than rendered as silently wrong geometry.
+// "FILE:LINE: what is wrong" rather than rendered as silently wrong geometry. What other tools
+// open is opened too, with a warning line in the LoadReport: a usemtl of a material no MTL
+// defines, an empty usemtl or a missing mtllib file give grey Kd 0.8, a vn without a direction
+// shades its triangles flat.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,13 +15,14 @@
 namespace strata {
 
 // The format's reading (scene_format.h): `path` and the MTL files its `mtllib` lines name
-// (relative to its folder). Throws strata::Error naming the file and line of a malformed OBJ line
-// or a missing file.
+// (relative to its folder) that exist. Throws strata::Error naming the file and line of a
+// malformed OBJ line, or a file that is there but cannot be read.
 std::vector<SceneFile> readObjScene(const std::filesystem::path& path);
 
 // The format's parsing: the bundle's first file as the OBJ and, from the others, the MTL files its
-// `mtllib` lines name. Throws strata::Error naming the file and line on malformed input, a missing
-// file or material.
+// `mtllib` lines name; a library not among them is a warning. Fills `triangleNormals` from the vn
+// of faces that give one on every corner. Throws strata::Error naming the file and line on
+// malformed input.
 MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report = nullptr);
 
 // readObjScene then parseObjScene.

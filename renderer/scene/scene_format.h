@@ -19,6 +19,9 @@ struct LoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
     size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
+    // What was tolerated and how, one line each naming the file and line where there is one:
+    // "cube.obj:12: material 'red' is not defined; using grey Kd 0.8".
+    std::vector<std::string> warnings;
 };
 
 struct SceneFile {

@@ -97,7 +97,15 @@ std::string describeScene(const LoadedScene& loaded) {
                   loaded.scenePath().string().c_str(), s.triangles, loaded.report.droppedTriangles,
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
                   loaded.scene.mesh().pointLights.size());
-    return line;
+    const size_t warnings = loaded.report.warnings.size();
+    if (warnings == 0) return line;
+    return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
+}
+
+std::string describeWarnings(const LoadedScene& loaded) {
+    std::string lines;
+    for (const std::string& warning : loaded.report.warnings) lines += "warning: " + warning + "\n";
+    return lines;
 }
 
 }  // namespace strata

@@ -38,7 +38,11 @@ LoadedScene parseScene(SceneBundle bundle);
 LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
-// One line for the log: triangles, dropped, emitters, emitting area, max albedo.
+// One line for the log: triangles, dropped, emitters, emitting area, max albedo, and how many
+// warnings loading gave.
 std::string describeScene(const LoadedScene& loaded);
+
+// Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.
+std::string describeWarnings(const LoadedScene& loaded);
 
 }  // namespace strata

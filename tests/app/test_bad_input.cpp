@@ -52,8 +52,9 @@ const std::vector<BadInputCase> kCliCases = {
      "s.obj:1: '1e39' is out of range"},
     {"OBJ coordinate beyond double range", {{"s.obj", "v 0 0 1e400\n"}}, "render {dir}/s.obj",
      "s.obj:1: '1e400' is out of range"},
-    {"OBJ normal is NaN", {{"s.obj", "vn 0 nan 1\n"}}, "render {dir}/s.obj",
-     "s.obj:1: 'nan' is not a finite number"},
+    {"OBJ malformed normal", {{"s.obj", "vn 0 x 1\n"}}, "render {dir}/s.obj", "s.obj:1: 'x' is not a number"},
+    {"OBJ normal index out of range", {{"s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n"}},
+     "render {dir}/s.obj", "s.obj:5: normal index 2 is out of range"},
     {"OBJ face index out of range", {{"s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}},
      "render {dir}/s.obj", "s.obj:4: vertex index 4 is out of range"},
     {"OBJ relative face index before the first vertex", {{"s.obj", "v 0 0 0\nf -1 -2 -3\n"}},
@@ -64,32 +65,25 @@ const std::vector<BadInputCase> kCliCases = {
      "s.obj:3: a face needs at least 3 vertices"},
     {"OBJ face index overflowing", {{"s.obj", "v 0 0 0\nf 1 1 99999999999999999999\n"}},
      "render {dir}/s.obj", "s.obj:2: '99999999999999999999' is not a face vertex"},
-    {"OBJ usemtl without a name", {{"s.obj", "usemtl\n"}}, "render {dir}/s.obj",
-     "s.obj:1: usemtl needs one material name"},
-    {"OBJ usemtl of an undefined material",
-     {{"s.obj", "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl nothing\nf 1 2 3\n"}},
-     "render {dir}/s.obj", "material [ 'nothing' ] not found"},
-    {"OBJ mtllib file missing", {{"s.obj", "mtllib gone.mtl\n"}}, "render {dir}/s.obj",
-     "gone.mtl: cannot open material library"},
     {"OBJ empty", {{"s.obj", ""}}, "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
     {"OBJ only degenerate and NaN triangles",
      {{"s.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv nan 0 0\nf 1 2 3\nf 1 2 4\n"}}, "render {dir}/s.obj",
      "s.obj: the scene has no usable triangles"},
     {"OBJ binary garbage", {{"s.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0v\xff\xfe f \x80", 17)}},
      "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
+    {"OBJ in UTF-16", {{"s.obj", std::string("\xff\xfev\0 \0", 6)}}, "render {dir}/s.obj",
+     "s.obj: the file is UTF-16 text; save it as UTF-8 or ASCII"},
     // MTL
     {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'abc' is not a number"},
     {"MTL Kd before newmtl", {{"s.mtl", "Kd 0.5 0.5 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:1: 'Kd' before any newmtl"},
     {"MTL Kd above 1", {{"s.mtl", "newmtl white\nKd 1.5 0.5 0.5\n"}}, "render {dir}/s.obj",
-     "material 'white' has Kd above 1"},
+     "s.mtl:1: material 'white' has Kd above 1"},
     {"MTL negative Ke", {{"s.mtl", "newmtl white\nKe -1 0 0\n"}}, "render {dir}/s.obj",
      "material 'white' has a negative or non-finite Kd, Ke, Ks or Pr"},
     {"MTL Ke is Inf", {{"s.mtl", "newmtl white\nKe inf 1 1\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'inf' is not a finite number"},
-    {"MTL newmtl without a name", {{"s.mtl", "newmtl\n"}}, "render {dir}/s.obj",
-     "s.mtl:1: newmtl needs one material name"},
     // Scene description JSON (s.json beside s.obj)
     {"scene JSON syntax error", {{"s.json", "{\n\"position\": [0,0,\n}"}}, "render {dir}/s.obj",
      "s.json: invalid JSON: parse error at line 3"},
@@ -154,6 +148,41 @@ const std::vector<BadInputCase> kCliCases = {
     {"samples --depth 0", {}, "samples --depth 0", "--depth: must be in 1..64"},
     {"samples --sampler unknown", {}, "samples --sampler halton", "--sampler: unknown sampler 'halton'"},
     {"samples --pixel not a number", {}, "samples --pixel x", "--pixel"},
+};
+
+// Input that other tools open: it renders, with one "warning: " line for each thing tolerated.
+struct ToleratedCase {
+    const char* what;  // the README's description of the case
+    std::map<std::string, std::string> files;
+    std::vector<std::string> warnings;  // each printed as "warning: {dir}/..."
+    const char* summary;                // text the load summary line must contain
+};
+
+const std::string kQuad = "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\n";
+const std::vector<ToleratedCase> kToleratedCases = {
+    {"OBJ usemtl of an undefined material",
+     {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl red\nf 1 3 2\nusemtl white\nf 1 4 3\n"}},
+     {"s.obj:6: material 'red' is not defined; using grey Kd 0.8"}, "1 emitting (area 0.5), max albedo 0.8"},
+    {"OBJ usemtl without a name",
+     {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl\nf 1 3 2\nusemtl white\nf 1 4 3\n"}},
+     {"s.obj:6: usemtl names no material; using grey Kd 0.8"}, "0 point lights, 1 warning\n"},
+    {"OBJ mtllib file missing",
+     {{"s.obj", "mtllib gone.mtl\n" + kQuad + "usemtl white\nf 1 3 2\nf 1 4 3\n"}},
+     {"s.obj:1: material library 'gone.mtl' is missing; its materials are not defined",
+      "s.obj:6: material 'white' is not defined; using grey Kd 0.8"},
+     "0 emitting (area 0), max albedo 0.8, 0 point lights, 2 warnings"},
+    {"OBJ and MTL material name with spaces",
+     {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl  white light \nf 1 3 2\nf 1 4 3\n"},
+      {"s.mtl", "newmtl white light\nKd 0.5 0.5 0.5\nKe 1 1 1\n"}},
+     {}, "2 emitting (area 1)"},
+    {"OBJ normal of zero length",
+     {{"s.obj", "mtllib s.mtl\n" + kQuad + "vn 0 0 0\nvn 0 1 0\nusemtl white\nf 1//1 3//2 2//2\nf 1//2 4//2 3//2\n"}},
+     {"s.obj:6: vn is zero or not finite; 1 triangle using such a normal is shaded flat"}, "2 emitting"},
+    {"MTL newmtl without a name, texture maps with options, statements not used",
+     {{"s.mtl", "newmtl\nKd 1 1 1\nnewmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nKa 1 1 1\nTf 1 1 1\nNi 1.5\n"
+                "d 1\nTr 0\nillum 2\nmap_Kd -bm 1.0 -s 1 1 1 wood.png\nmap_d a.png\nmap_Ke e.png\n"
+                "norm n.png\nmap_Bump -bm 0.5 b.png\nbump b.png\n"}},
+     {}, "2 emitting (area 1), max albedo 0.5, 0 point lights\n"},
 };
 
 std::string slurp(const std::filesystem::path& path) {
@@ -306,4 +335,28 @@ TEST_CASE("bad input: environment maps that are not 2:1 or hold negative or non-
     const auto lit = test::runStrata("render " + scene + " --spp 24 --env " + (dir / "good.exr").string());
     CAPTURE(lit.err);
     CHECK(lit.exitCode == 0);
+}
+
+TEST_CASE("bad input: tolerated input renders, each warning one line naming the file and line") {
+    int index = 0;
+    for (const ToleratedCase& c : kToleratedCases) {
+        const std::string what = c.what;
+        CAPTURE(what);
+        const auto dir = test::scratchDir("tolerated-input-" + std::to_string(index++));
+        std::map<std::string, std::string> files = {{"s.obj", kObj}, {"s.mtl", kMtl}, {"s.json", kCamera}};
+        for (const auto& [name, text] : c.files) files[name] = text;
+        for (const auto& [name, text] : files) std::ofstream(dir / name, std::ios::binary) << text;
+        const test::CommandResult result = test::runStrata("render " + (dir / "s.obj").string() + " --spp 24");
+        CAPTURE(result.err);
+        CHECK(result.exitCode == 0);
+        std::vector<std::string> warnings;
+        std::istringstream lines(result.err);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("warning: ", 0) == 0) warnings.push_back(line);
+        }
+        std::vector<std::string> expected;
+        for (const std::string& warning : c.warnings) expected.push_back("warning: " + (dir / warning).string());
+        CHECK(warnings == expected);
+        CHECK(result.err.find(c.summary) != std::string::npos);
+    }
 }

@@ -21,10 +21,23 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 // What a loader promises of every mesh it returns (scene_format.h, mesh.h), which the renderer
 // relies on: indices in range, one material per triangle, finite vertices and a non-zero float
-// area on every kept triangle, Kd in [0, 1] and finite Ke >= 0.
+// area on every kept triangle, Kd in [0, 1] and finite Ke >= 0, shading normals of unit length
+// (none, or three or kNoNormals per triangle) and warnings of one line each.
 void checkMesh(const MeshData& mesh, const LoadReport& report) {
     require(mesh.triangleMaterials.size() == mesh.triangles.size(), "not one material per triangle");
     require(report.faces == mesh.triangles.size(), "a wrong face count");
+    require(mesh.triangleNormals.empty() || mesh.triangleNormals.size() == mesh.triangles.size(),
+            "not one normal triple per triangle");
+    for (const auto& corners : mesh.triangleNormals) {
+        if (corners == kNoNormals) continue;
+        for (uint32_t index : corners) require(index < mesh.normals.size(), "a normal index out of range");
+    }
+    for (const glm::vec3& n : mesh.normals) {
+        require(finite(n) && std::abs(glm::length(n) - 1.0f) < 1e-5f, "a normal not of unit length");
+    }
+    for (const std::string& warning : report.warnings) {
+        require(!warning.empty() && warning.find('\n') == std::string::npos, "a warning not of one line");
+    }
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
         require(mesh.triangleMaterials[i] < mesh.materials.size(), "a material index out of range");
         for (uint32_t index : mesh.triangles[i]) {

@@ -40,7 +40,7 @@ TEST_CASE("fuzz regressions: every seed and every finding is accepted or refused
 TEST_CASE("fuzz regressions: a '#' inside a face line hides the rest of it from the loader too") {
     // Finding crash-f406ca82: the line checks read "f 1 2 3/1#/1 5" as "f 1 2 3/1", tinyobjloader
     // read the 5 as well and the loader indexed past the 4th and last vertex.
-    const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3/1#/1 5\nf 1 3 4 # 5\n";
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1 2 3/1#/1 5\nf 1 3 4 # 5\n";
     LoadReport report;
     const MeshData mesh = parseObj(obj, "hash.obj", "", "hash.mtl", &report);
     CHECK(mesh.triangles.size() == 2);
