@@ -30,7 +30,9 @@ std::optional<TruncationChoice> chooseTruncationDepth(double epsilon, double max
 }
 
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene) {
-    if (!scene.mesh().pointLights.empty()) throw Error("point lights have no radiance bound");
+    if (!scene.mesh().pointLights.empty() || !scene.mesh().directionalLights.empty()) {
+        throw Error("point and directional lights have no radiance bound");
+    }
     const SceneSummary& summary = scene.summary();
     const auto choice = chooseTruncationDepth(epsilon, summary.maxAlbedo, summary.maxEmission);
     if (!choice) {

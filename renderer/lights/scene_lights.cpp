@@ -1,6 +1,11 @@
 #include "lights/scene_lights.h"
 
+#include <limits>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 #include "lights/area_light.h"
+#include "lights/directional_light.h"
 #include "lights/point_light.h"
 
 namespace strata {
@@ -12,6 +17,17 @@ double meanPower(const Light& light) {
 }
 
 bool isBlack(const glm::vec3& v) { return !(v.x > 0.0f || v.y > 0.0f || v.z > 0.0f); }
+
+// The radius of the sphere about the centre of the vertices' bounding box that holds them all.
+float boundingSphereRadius(const std::vector<glm::vec3>& positions) {
+    glm::vec3 lower(std::numeric_limits<float>::infinity());
+    glm::vec3 upper = -lower;
+    for (const glm::vec3& p : positions) {
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    return positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
+}
 
 std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<double> powers;
@@ -34,6 +50,10 @@ SceneLights::SceneLights(const MeshData& mesh)
         triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
     }
     for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
+    for (const DirectionalLight& light : mesh.directionalLights) {
+        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance,
+                                               boundingSphereRadius(mesh.positions)));
+    }
     sampler_ = LightSampler(powersOf(lights_));
 }
 

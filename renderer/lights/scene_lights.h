@@ -16,7 +16,8 @@ namespace strata {
 
 class SceneLights {
 public:
-    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights.
+    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights,
+    // then the directional lights.
     explicit SceneLights(const MeshData& mesh);
 
     size_t size() const { return lights_.size(); }
@@ -28,7 +29,7 @@ public:
     // The lights a ray that leaves the scene receives radiance from (none until the scene has an
     // environment).
     const std::vector<uint32_t>& lightsAtInfinity() const { return atInfinity_; }
-    // The delta lights (point lights), which next-event estimation alone reaches.
+    // The delta lights (point and directional), which next-event estimation alone reaches.
     size_t deltaLights() const { return deltaLights_; }
 
 private:

@@ -36,7 +36,7 @@ struct BadInputCase {
 const std::vector<BadInputCase> kCliCases = {
     // Scene file
     {"scene file of an unknown format", {{"s.fbx", kObj}}, "render {dir}/s.fbx",
-     "s.fbx: unknown scene format '.fbx' (known: .obj)"},
+     "s.fbx: unknown scene format '.fbx' (known: .obj, .gltf, .glb)"},
     {"scene file of an unknown format, missing", {}, "render {dir}/absent.fbx",
      "absent.fbx: no such scene file"},
     // OBJ
