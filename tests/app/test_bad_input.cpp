@@ -25,6 +25,20 @@ const std::string kMtl = "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
 const std::string kCamera =
     R"({"position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60,"width":4,"height":4})";
 
+// A glTF triangle to mutate: positions (accessor 0) and indices 0 1 7 (accessor 1, 7 out of
+// range) in a buffer (base64 data: by default); `primitive` and `extra` are spliced into its
+// primitive and its top level.
+std::string gltfTriangle(const std::string& primitive, const std::string& extra = "",
+                         const std::string& buffer = "\"data:application/octet-stream;base64,"
+                                                     "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAcAAAA=\"") {
+    return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":44,"uri":)" + buffer +
+           R"(}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+           R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}],)"
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0})" + primitive + R"(}]}],)"
+           R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}])" + extra + "}";
+}
+
 struct BadInputCase {
     const char* what;       // the README's description of the case
     std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
@@ -75,6 +89,21 @@ const std::vector<BadInputCase> kCliCases = {
      "s.obj: the scene has no usable triangles"},
     {"OBJ binary garbage", {{"s.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0v\xff\xfe f \x80", 17)}},
      "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
+    // glTF
+    {"glTF malformed JSON", {{"s.gltf", R"({"asset": {"version": "2.0"},)"}}, "render {dir}/s.gltf",
+     "s.gltf: [json.exception.parse_error.101] parse error at line 1"},
+    {"glTF unknown required extension",
+     {{"s.gltf", gltfTriangle("", R"(,"extensionsRequired":["KHR_draco_mesh_compression"])")}},
+     "render {dir}/s.gltf", "s.gltf: requires extension KHR_draco_mesh_compression, which Strata does not implement"},
+    {"glTF primitive of lines", {{"s.gltf", gltfTriangle(R"(,"mode":1)")}}, "render {dir}/s.gltf",
+     "s.gltf: mesh '' (0) primitive 0: mode 1 (lines) is not a surface"},
+    {"glTF index out of range", {{"s.gltf", gltfTriangle(R"(,"indices":1)")}}, "render {dir}/s.gltf",
+     "s.gltf: mesh '' (0) primitive 0: index 7 out of range (3 vertices)"},
+    {"glTF buffer file missing", {{"s.gltf", gltfTriangle("", "", R"("gone.bin")")}}, "render {dir}/s.gltf",
+     "s.gltf: File not found : gone.bin"},
+    {"glTF node hierarchy with a cycle",
+     {{"s.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}]})"}},
+     "render {dir}/s.gltf", "s.gltf: node 0 is reached twice: the node hierarchy is not a tree"},
     // MTL
     {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'abc' is not a number"},
