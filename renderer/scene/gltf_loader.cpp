@@ -176,7 +176,8 @@ bool allowed(AccessorUse use, int componentType, bool normalized) {
     switch (use) {
         case AccessorUse::Position:
             return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? !normalized
-                                                                  : componentType <= TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+                                                                  : componentType >= TINYGLTF_COMPONENT_TYPE_BYTE &&
+                                                                        componentType <= TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         case AccessorUse::Normal:
             return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
                        ? !normalized
