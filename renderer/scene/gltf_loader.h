@@ -17,8 +17,9 @@
 namespace strata {
 
 // The format's reading (scene_format.h): `path` and every buffer and image file it refers to by
-// URI (data: URIs are inside it), named by their URIs, relative to its folder. Throws
-// strata::Error naming a malformed file or a missing buffer.
+// URI (data: URIs are inside it), named by their URIs, relative to its folder; a missing image
+// is left out (textures are not rendered yet). Throws strata::Error naming a malformed file or a
+// missing buffer.
 std::vector<SceneFile> readGltfScene(const std::filesystem::path& path);
 
 // The format's parsing: the bundle's first file as the glTF (JSON or binary), its URIs resolved
