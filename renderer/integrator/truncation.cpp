@@ -37,7 +37,9 @@ double maxEmittedRadiance(const Scene& scene) {
 }
 
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene) {
-    if (!scene.mesh().pointLights.empty()) throw Error("point lights have no radiance bound");
+    if (!scene.mesh().pointLights.empty() || !scene.mesh().directionalLights.empty()) {
+        throw Error("point and directional lights have no radiance bound");
+    }
     const SceneSummary& summary = scene.summary();
     const auto choice = chooseTruncationDepth(epsilon, summary.maxAlbedo, maxEmittedRadiance(scene));
     if (!choice) {

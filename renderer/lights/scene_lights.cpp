@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "lights/area_light.h"
+#include "lights/directional_light.h"
 #include "lights/point_light.h"
 
 namespace strata {
@@ -49,6 +50,10 @@ SceneLights::SceneLights(const MeshData& mesh)
         triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
     }
     for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
+    for (const DirectionalLight& light : mesh.directionalLights) {
+        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance,
+                                               boundingSphereRadius(mesh.positions)));
+    }
     const Environment environment = resolveEnvironment(mesh.environment, !lights_.empty());
     if (auto light = makeEnvironmentLight(environment, boundingSphereRadius(mesh.positions))) {
         atInfinity_.push_back(add(std::move(light)));

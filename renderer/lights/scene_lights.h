@@ -17,7 +17,7 @@ namespace strata {
 class SceneLights {
 public:
     // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights,
-    // then the environment (after the default rule).
+    // then the directional lights, then the environment (after the default rule).
     explicit SceneLights(const MeshData& mesh);
 
     size_t size() const { return lights_.size(); }
@@ -33,7 +33,7 @@ public:
     // Whether the scene, having no light of its own and no environment given, is lit by the
     // default uniform white environment (environment.h).
     bool litByDefault() const { return litByDefault_; }
-    // The delta lights (point lights), which next-event estimation alone reaches.
+    // The delta lights (point and directional), which next-event estimation alone reaches.
     size_t deltaLights() const { return deltaLights_; }
 
 private:

@@ -8,6 +8,7 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "lights/directional_light.h"
 #include "lights/environment.h"
 #include "lights/point_light.h"
 #include "materials/material.h"
@@ -28,6 +29,7 @@ struct MeshData {
     std::vector<std::array<uint32_t, 3>> triangleNormals;
     std::vector<Material> materials;
     std::vector<PointLight> pointLights;
+    std::vector<DirectionalLight> directionalLights;
     Environment environment;
 };
 

@@ -3,16 +3,23 @@
 #include <algorithm>
 #include <cctype>
 
+#include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "util/error.h"
 
 namespace strata {
 namespace {
 
+// An OBJ carries no camera.
+ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report) {
+    return {parseObjScene(bundle, report), std::nullopt};
+}
+
 // Every format Strata reads. A new one is its loader and one line here.
 const std::vector<SceneFormat>& sceneFormats() {
     static const std::vector<SceneFormat> formats = {
-        {{".obj"}, readObjScene, parseObjScene},
+        {{".obj"}, readObjScene, parseObjFormat},
+        {{".gltf", ".glb"}, readGltfScene, parseGltfScene},
     };
     return formats;
 }
@@ -59,10 +66,14 @@ std::string knownSceneExtensions() {
     return known;
 }
 
-MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report) {
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report) {
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
     return format.parse(bundle, report);
+}
+
+MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report) {
+    return parseSceneFile(bundle, report).mesh;
 }
 
 }  // namespace strata

@@ -2,7 +2,7 @@
 // Scene file formats behind one door. A scene is read in two steps, so that MPI rank 0 can read
 // it and every rank parse the same bytes (app/render_job.h):
 //   reading: the main file's path -> every file the scene needs, as bytes (a SceneBundle);
-//   parsing: a SceneBundle -> MeshData, from memory only.
+//   parsing: a SceneBundle -> MeshData (and the camera a format may carry), from memory only.
 // Each format provides the two in its own loader file and is one line of the table in
 // scene_format.cpp; the main file's extension picks it.
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/camera.h"
 #include "scene/mesh.h"
 
 namespace strata {
@@ -19,9 +20,17 @@ struct LoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
     size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
-    // What was tolerated and how, one line each naming the file and line where there is one:
+    // What was tolerated and how, or what the scene file holds that Strata does not render (yet),
+    // one line each naming the file and line where there is one:
     // "cube.obj:12: material 'red' is not defined; using grey Kd 0.8".
     std::vector<std::string> warnings;
+};
+
+// What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
+// of the scene's own camera, which the scene takes when no description or --camera file gives one.
+struct ParsedScene {
+    MeshData mesh;
+    std::optional<CameraPose> camera;
 };
 
 struct SceneFile {
@@ -53,19 +62,22 @@ struct SceneFormat {
     // The main file (`path`, which exists) and every file it refers to; throws strata::Error
     // naming a missing or malformed file.
     std::vector<SceneFile> (*read)(const std::filesystem::path& path);
-    // The mesh from a bundle's files; throws strata::Error naming the file (and line).
-    MeshData (*parse)(const SceneBundle& bundle, LoadReport* report);
+    // The mesh (and camera) from a bundle's files; throws strata::Error naming the file (and line).
+    ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report);
 };
 
 // The format of `path` by its extension, in any case; throws strata::Error
-// "PATH: unknown scene format '.EXT' (known: .obj)" for one that is not in the table (and names
+// "PATH: unknown scene format '.EXT' (known: .obj, .gltf, .glb)" for one that is not in the table (and names
 // the known ones too when there is no extension).
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
 
-// The registered extensions for messages and help: ".obj".
+// The registered extensions for messages and help: ".obj, .gltf, .glb".
 std::string knownSceneExtensions();
 
-// The mesh of `bundle`, parsed by the format of its main file.
+// The mesh and camera of `bundle`, parsed by the format of its main file.
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report = nullptr);
+
+// The mesh alone: parseSceneFile(...).mesh.
 MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report = nullptr);
 
 }  // namespace strata

@@ -58,7 +58,8 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 
 LoadedScene parseScene(SceneBundle bundle) {
     LoadReport report;
-    MeshData mesh = parseSceneMesh(bundle, &report);
+    ParsedScene parsed = parseSceneFile(bundle, &report);
+    MeshData& mesh = parsed.mesh;
     if (mesh.triangles.empty()) {
         throw Error(bundle.path.string() + ": the scene has no usable triangles");
     }
@@ -79,7 +80,7 @@ LoadedScene parseScene(SceneBundle bundle) {
                                 cameraFile.pointLights.end());
     }
     Scene scene(std::move(mesh));
-    if (!posed) settings.pose = framingPose(scene);
+    if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
     return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
 }
 
@@ -90,13 +91,14 @@ LoadedScene loadScene(const std::filesystem::path& path,
 
 std::string describeScene(const LoadedScene& loaded) {
     const SceneSummary& s = loaded.scene.summary();
+    const glm::vec3 extent = loaded.scene.boundsMax() - loaded.scene.boundsMin();
     char line[512];
     std::snprintf(line, sizeof line,
                   "%s: %zu triangles (%zu degenerate dropped, %zu non-finite vertices), "
-                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights",
+                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights, extent %.4g x %.4g x %.4g",
                   loaded.scenePath().string().c_str(), s.triangles, loaded.report.droppedTriangles,
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
-                  loaded.scene.mesh().pointLights.size());
+                  loaded.scene.mesh().pointLights.size(), extent.x, extent.y, extent.z);
     const size_t warnings = loaded.report.warnings.size();
     if (warnings == 0) return line;
     return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));

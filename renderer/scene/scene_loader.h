@@ -30,7 +30,8 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
-// "point_lights", the camera from the camera file, else the description, else framing the scene.
+// "point_lights", the camera from the camera file, else the description, else the scene file's
+// own (glTF), else framing the scene.
 // Throws strata::Error naming the bad file.
 LoadedScene parseScene(SceneBundle bundle);
 
@@ -38,8 +39,9 @@ LoadedScene parseScene(SceneBundle bundle);
 LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
-// One line for the log: triangles, dropped, emitters, emitting area, max albedo, and how many
-// warnings loading gave.
+// One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights, the
+// extent (the bounding box's size, in the scene's units: metres for glTF) and how many warnings
+// loading gave.
 std::string describeScene(const LoadedScene& loaded);
 
 // Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.

@@ -27,6 +27,20 @@ const std::string kMtl = "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
 const std::string kCamera =
     R"({"position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60,"width":4,"height":4})";
 
+// A glTF triangle to mutate: positions (accessor 0) and indices 0 1 7 (accessor 1, 7 out of
+// range) in a buffer (base64 data: by default); `primitive` and `extra` are spliced into its
+// primitive and its top level.
+std::string gltfTriangle(const std::string& primitive, const std::string& extra = "",
+                         const std::string& buffer = "\"data:application/octet-stream;base64,"
+                                                     "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAcAAAA=\"") {
+    return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":44,"uri":)" + buffer +
+           R"(}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+           R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}],)"
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0})" + primitive + R"(}]}],)"
+           R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}])" + extra + "}";
+}
+
 struct BadInputCase {
     const char* what;       // the README's description of the case
     std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
@@ -38,7 +52,7 @@ struct BadInputCase {
 const std::vector<BadInputCase> kCliCases = {
     // Scene file
     {"scene file of an unknown format", {{"s.fbx", kObj}}, "render {dir}/s.fbx",
-     "s.fbx: unknown scene format '.fbx' (known: .obj)"},
+     "s.fbx: unknown scene format '.fbx' (known: .obj, .gltf, .glb)"},
     {"scene file of an unknown format, missing", {}, "render {dir}/absent.fbx",
      "absent.fbx: no such scene file"},
     // OBJ
@@ -73,6 +87,21 @@ const std::vector<BadInputCase> kCliCases = {
      "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
     {"OBJ in UTF-16", {{"s.obj", std::string("\xff\xfev\0 \0", 6)}}, "render {dir}/s.obj",
      "s.obj: the file is UTF-16 text; save it as UTF-8 or ASCII"},
+    // glTF
+    {"glTF malformed JSON", {{"s.gltf", R"({"asset": {"version": "2.0"},)"}}, "render {dir}/s.gltf",
+     "s.gltf: [json.exception.parse_error.101] parse error at line 1"},
+    {"glTF unknown required extension",
+     {{"s.gltf", gltfTriangle("", R"(,"extensionsRequired":["KHR_draco_mesh_compression"])")}},
+     "render {dir}/s.gltf", "s.gltf: requires extension KHR_draco_mesh_compression, which Strata does not implement"},
+    {"glTF primitive of lines", {{"s.gltf", gltfTriangle(R"(,"mode":1)")}}, "render {dir}/s.gltf",
+     "s.gltf: mesh '' (0) primitive 0: mode 1 (lines) is not a surface"},
+    {"glTF index out of range", {{"s.gltf", gltfTriangle(R"(,"indices":1)")}}, "render {dir}/s.gltf",
+     "s.gltf: mesh '' (0) primitive 0: index 7 out of range (3 vertices)"},
+    {"glTF buffer file missing", {{"s.gltf", gltfTriangle("", "", R"("gone.bin")")}}, "render {dir}/s.gltf",
+     "s.gltf: File not found : gone.bin"},
+    {"glTF node hierarchy with a cycle",
+     {{"s.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}]})"}},
+     "render {dir}/s.gltf", "s.gltf: node 0 is reached twice: the node hierarchy is not a tree"},
     // MTL
     {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'abc' is not a number"},
@@ -165,12 +194,12 @@ const std::vector<ToleratedCase> kToleratedCases = {
      {"s.obj:6: material 'red' is not defined; using grey Kd 0.8"}, "1 emitting (area 0.5), max albedo 0.8"},
     {"OBJ usemtl without a name",
      {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl\nf 1 3 2\nusemtl white\nf 1 4 3\n"}},
-     {"s.obj:6: usemtl names no material; using grey Kd 0.8"}, "0 point lights, 1 warning\n"},
+     {"s.obj:6: usemtl names no material; using grey Kd 0.8"}, "extent 1 x 0 x 1, 1 warning\n"},
     {"OBJ mtllib file missing",
      {{"s.obj", "mtllib gone.mtl\n" + kQuad + "usemtl white\nf 1 3 2\nf 1 4 3\n"}},
      {"s.obj:1: material library 'gone.mtl' is missing; its materials are not defined",
       "s.obj:6: material 'white' is not defined; using grey Kd 0.8"},
-     "0 emitting (area 0), max albedo 0.8, 0 point lights, 2 warnings"},
+     "0 emitting (area 0), max albedo 0.8, 0 point lights, extent 1 x 0 x 1, 2 warnings"},
     {"OBJ and MTL material name with spaces",
      {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl  white light \nf 1 3 2\nf 1 4 3\n"},
       {"s.mtl", "newmtl white light\nKd 0.5 0.5 0.5\nKe 1 1 1\n"}},
@@ -182,7 +211,7 @@ const std::vector<ToleratedCase> kToleratedCases = {
      {{"s.mtl", "newmtl\nKd 1 1 1\nnewmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nKa 1 1 1\nTf 1 1 1\nNi 1.5\n"
                 "d 1\nTr 0\nillum 2\nmap_Kd -bm 1.0 -s 1 1 1 wood.png\nmap_d a.png\nmap_Ke e.png\n"
                 "norm n.png\nmap_Bump -bm 0.5 b.png\nbump b.png\n"}},
-     {}, "2 emitting (area 1), max albedo 0.5, 0 point lights\n"},
+     {}, "2 emitting (area 1), max albedo 0.5, 0 point lights, extent 1 x 0 x 1\n"},
 };
 
 std::string slurp(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_format.h"
 #include "scene/scene_loader.h"
@@ -49,23 +50,26 @@ void checkSameMesh(const MeshData& a, const MeshData& b) {
 TEST_CASE("scene formats: the extension picks the format, in any case") {
     const SceneFormat& obj = sceneFormatOf("scene.obj");
     CHECK((obj.read == &readObjScene));
-    CHECK((obj.parse == &parseObjScene));
     CHECK(&sceneFormatOf("SCENE.OBJ") == &obj);
     CHECK(&sceneFormatOf("some/folder.x/Scene.Obj") == &obj);
-    CHECK(knownSceneExtensions() == ".obj");
+    const SceneFormat& gltf = sceneFormatOf("scene.gltf");
+    CHECK((gltf.read == &readGltfScene));
+    CHECK((gltf.parse == &parseGltfScene));
+    CHECK(&sceneFormatOf("dir/Scene.GLB") == &gltf);
+    CHECK(knownSceneExtensions() == ".obj, .gltf, .glb");
 }
 
 TEST_CASE("scene formats: an unknown extension is one line naming the file, it and the known ones") {
-    CHECK(errorOf("model.fbx") == "model.fbx: unknown scene format '.fbx' (known: .obj)");
-    CHECK(errorOf("dir/model.GLB") == "dir/model.GLB: unknown scene format '.GLB' (known: .obj)");
-    CHECK(errorOf("model.obj.bak") == "model.obj.bak: unknown scene format '.bak' (known: .obj)");
-    CHECK(errorOf("model") == "model: no extension to tell the scene format (known: .obj)");
+    CHECK(errorOf("model.fbx") == "model.fbx: unknown scene format '.fbx' (known: .obj, .gltf, .glb)");
+    CHECK(errorOf("dir/model.FBX") == "dir/model.FBX: unknown scene format '.FBX' (known: .obj, .gltf, .glb)");
+    CHECK(errorOf("model.obj.bak") == "model.obj.bak: unknown scene format '.bak' (known: .obj, .gltf, .glb)");
+    CHECK(errorOf("model") == "model: no extension to tell the scene format (known: .obj, .gltf, .glb)");
 
     // Refused before any parsing: this file would fail as an OBJ with a message of its own.
     const auto dir = test::scratchDir("scene-format-unknown");
     std::ofstream(dir / "model.fbx") << "v 0 0 0\nf 1 2\n";
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "model.fbx"),
-                         ((dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj)").c_str(),
+                         ((dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj, .gltf, .glb)").c_str(),
                          Error);
     // A missing file is missing whatever its extension.
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "absent.fbx"),

@@ -143,7 +143,7 @@ TEST_CASE("a scene that fails to load leaves the old one rendering") {
     h.frame();
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message() ==
-          "cannot open scene: " + (dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj)");
+          "cannot open scene: " + (dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj, .gltf, .glb)");
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
 

@@ -1,0 +1,30 @@
+#pragma once
+// The glTF 2.0 format (.gltf with its buffers and images, .glb) through tinygltf. The default
+// scene's node hierarchy is flattened into one mesh in world space (metres): triangle primitives
+// with their normals, the metallic-roughness factors mapped onto Strata's material, the first
+// perspective camera and the KHR_lights_punctual lights. tinygltf checks the JSON; the accessors,
+// indices and node references it does not check are checked here, each failure one line naming
+// the file and what is wrong.
+//
+// Not rendered yet, each noted once in LoadReport::warnings: textures (the factors alone are
+// used), alphaMode MASK/BLEND (opaque), orthographic cameras (the scene is framed), spot lights'
+// cones (they light as point lights).
+#include <filesystem>
+#include <vector>
+
+#include "scene/scene_format.h"
+
+namespace strata {
+
+// The format's reading (scene_format.h): `path` and every buffer and image file it refers to by
+// URI (data: URIs are inside it), named by their URIs, relative to its folder; a missing image
+// is left out (textures are not rendered yet). Throws strata::Error naming a malformed file or a
+// missing buffer.
+std::vector<SceneFile> readGltfScene(const std::filesystem::path& path);
+
+// The format's parsing: the bundle's first file as the glTF (JSON or binary), its URIs resolved
+// among the bundle's files and never on the file system. Throws strata::Error naming the file
+// and the mesh, node, accessor, material or extension that Strata cannot render.
+ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report = nullptr);
+
+}  // namespace strata
