@@ -22,14 +22,23 @@ float powerHeuristic(float own, float other) {
 constexpr float kShadowRayShortening = 1e-4f;
 
 // Turns the geometric normal toward the viewer direction `toViewer`, and the shading normal onto
-// the geometric normal's side. When the viewer is below the shading hemisphere although above the
-// surface (vertex normals tilted away from it, seen at a grazing angle), the shading normal gives
-// way to the geometric one: its hemisphere would hold no direction toward the viewer, and the
-// surface would show a black rim.
-void orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
-    if (glm::dot(surface.normal, toViewer) < 0.0f) surface.normal = -surface.normal;
-    if (glm::dot(surface.shadingNormal, surface.normal) < 0.0f) surface.shadingNormal = -surface.shadingNormal;
-    if (!(glm::dot(surface.shadingNormal, toViewer) > 0.0f)) surface.shadingNormal = surface.normal;
+// the geometric normal's side; returns the cosine between the viewer and the geometric normal.
+// When the viewer is below the shading hemisphere although above the surface (vertex normals
+// tilted away from it, seen at a grazing angle), the shading normal gives way to the geometric
+// one: its hemisphere would hold no direction toward the viewer, and the surface would show a
+// black rim. A flat surface's two normals are one, and all but the first test are skipped.
+float orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
+    float cosine = glm::dot(surface.normal, toViewer);
+    if (cosine < 0.0f) {
+        surface.normal = -surface.normal;
+        surface.shadingNormal = -surface.shadingNormal;
+        cosine = -cosine;
+    }
+    if (surface.smooth) {
+        if (glm::dot(surface.shadingNormal, surface.normal) < 0.0f) surface.shadingNormal = -surface.shadingNormal;
+        if (!(glm::dot(surface.shadingNormal, toViewer) > 0.0f)) surface.shadingNormal = surface.normal;
+    }
+    return cosine;
 }
 
 }  // namespace
@@ -78,8 +87,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
 
         // Reflection is two-sided: the hemisphere is on the side the ray came from.
         SurfaceHit surface = scene_.surface(*hit);
-        orientToward(surface, -ray.direction);
-        if (!(glm::dot(surface.normal, ray.direction) < 0.0f)) break;  // along the surface: nothing seen
+        if (!(orientToward(surface, -ray.direction) > 0.0f)) break;  // along the surface: nothing seen
         // The strata, the BSDF's cosines and wo live in the shading frame.
         const Frame frame = Frame::fromNormal(surface.shadingNormal);
         const glm::vec3 wo = frame.toLocal(-ray.direction);
@@ -92,8 +100,9 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce, bsdf, wo);
         const glm::vec3 direction = frame.toWorld(sampled.local);
         // A direction above the shading hemisphere but below the surface itself would leave
-        // through the back: it counts, with weight zero (the path ends).
-        if (!(glm::dot(direction, surface.normal) > 0.0f)) break;
+        // through the back: it counts, with weight zero (the path ends). On a flat surface the
+        // two hemispheres are one.
+        if (surface.smooth && !(glm::dot(direction, surface.normal) > 0.0f)) break;
         weight *= sampled.weight;
         if (isBlack(weight)) break;
         if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
@@ -128,7 +137,7 @@ glm::vec3 PathIntegrator::lightSample(const SurfaceHit& surface, const Frame& fr
     const auto sample = light.sample(surface.point, {u.y, u.z});
     if (!sample) return glm::vec3(0.0f);
     // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
-    if (!(glm::dot(sample->direction, surface.normal) > 0.0f)) return glm::vec3(0.0f);
+    if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return glm::vec3(0.0f);
     const glm::vec3 wi = frame.toLocal(sample->direction);
     if (!(wi.z > 0.0f)) return glm::vec3(0.0f);
     const glm::vec3 f = bsdf.evaluate(wo, wi);

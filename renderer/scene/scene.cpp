@@ -222,13 +222,17 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     hit.normal.y = normal.y;
     hit.normal.z = normal.z;
     hit.shadingNormal = hit.normal;
+    hit.smooth = false;
     if (!mesh_.triangleNormals.empty() && mesh_.triangleNormals[triangle] != kNoNormals) {
         const auto& corners = mesh_.triangleNormals[triangle];
         const glm::vec3 interpolated = b0 * mesh_.normals[corners[0]] + b1 * mesh_.normals[corners[1]] +
                                        b2 * mesh_.normals[corners[2]];
         const float length = glm::length(interpolated);
         // Opposed vertex normals can cancel; the geometric normal is the only sensible answer.
-        if (length > 1e-6f) hit.shadingNormal = interpolated / length;
+        if (length > 1e-6f) {
+            hit.shadingNormal = interpolated / length;
+            hit.smooth = true;
+        }
     }
     hit.triangle = triangle;
     return hit;

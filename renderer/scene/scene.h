@@ -35,6 +35,7 @@ struct SurfaceHit {
     glm::vec3 normal;         // unit geometric normal, counter-clockwise = front
     glm::vec3 shadingNormal;  // unit, interpolated from the vertex normals; `normal` when flat
     uint32_t triangle;
+    bool smooth;              // the shading normal is interpolated (else it is `normal`)
 };
 
 struct SceneSummary {
