@@ -29,6 +29,13 @@ ScratchDir scratchDir(const std::string& name) {
     return ScratchDir(dir);
 }
 
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
 CommandResult runCommand(const std::string& commandLine) {
     const auto dir = scratchDir("run");
     const auto outFile = dir / "stdout";
@@ -36,14 +43,8 @@ CommandResult runCommand(const std::string& commandLine) {
     const std::string command = "{ " + commandLine + "; } >" + outFile.string() + " 2>" +
                                 errFile.string() + " </dev/null";
     const int status = std::system(command.c_str());
-    auto slurp = [](const std::filesystem::path& p) {
-        std::ifstream in(p);
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
-    };
     CommandResult result{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
-                         slurp(outFile), slurp(errFile)};
+                         fileBytes(outFile), fileBytes(errFile)};
     std::filesystem::remove_all(dir);
     return result;
 }

@@ -51,6 +51,8 @@ struct CommandResult {
     std::string err;  // stderr
 };
 // Runs a shell command line, capturing its output.
+// The file's bytes; empty when it cannot be read.
+std::string fileBytes(const std::filesystem::path& path);
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);

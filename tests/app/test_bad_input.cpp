@@ -214,12 +214,6 @@ const std::vector<ToleratedCase> kToleratedCases = {
      {}, "2 emitting (area 1), max albedo 0.5, 0 point lights, extent 1 x 0 x 1\n"},
 };
 
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
@@ -265,7 +259,7 @@ TEST_CASE("bad input: every case is one 'strata:' line naming the culprit, a non
         REQUIRE(errorLines.size() == 1);
         CHECK(errorLines[0] == lastLine);
         CHECK(errorLines[0].find(c.expected) != std::string::npos);
-        CHECK(slurp(dir / "keep.exr") == precious);
+        CHECK(test::fileBytes(dir / "keep.exr") == precious);
         // No temporary file left behind either.
         size_t entries = 0;
         for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++entries;
@@ -295,7 +289,7 @@ TEST_CASE("bad input: EXR references that are missing, empty, not EXR or truncat
     const auto dir = test::scratchDir("bad-exr");
     Image good{8, 8, std::vector<glm::vec3>(64, glm::vec3(0.25f))};
     writeImage(dir / "good.exr", good);
-    const std::string bytes = slurp(dir / "good.exr");
+    const std::string bytes = test::fileBytes(dir / "good.exr");
     std::ofstream(dir / "empty.exr", std::ios::binary) << "";
     std::ofstream(dir / "text.exr", std::ios::binary) << "P3 this is not an EXR\n";
     std::ofstream(dir / "truncated.exr", std::ios::binary) << bytes.substr(0, bytes.size() / 2);

@@ -21,12 +21,6 @@ int lineCount(const std::string& text) {
     return lines;
 }
 
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 }  // namespace
 
 TEST_CASE("cli: the furnace at depth 3, 240 spp reports a mean within 1% of 1.875") {
@@ -51,7 +45,7 @@ TEST_CASE("cli: --threads 1 and --threads 2 write bit-identical images") {
                                             threads + " --out " + (dir / (std::string(threads) + ".pfm")).string());
         REQUIRE(result.exitCode == 0);
     }
-    CHECK(slurp(dir / "1.pfm") == slurp(dir / "2.pfm"));
+    CHECK(test::fileBytes(dir / "1.pfm") == test::fileBytes(dir / "2.pfm"));
 }
 
 TEST_CASE("cli: --version prints the version, --help one line per command") {
@@ -116,7 +110,7 @@ TEST_CASE("cli: a failed render leaves an existing output file untouched") {
     std::ofstream(out) << "precious";
     const auto result = test::runStrata("render " + (dir / "absent.obj").string() + " --out " + out.string());
     CHECK(result.exitCode != 0);
-    CHECK(slurp(out) == "precious");
+    CHECK(test::fileBytes(out) == "precious");
 }
 
 TEST_CASE("cli: samples prints one CSV line per sample, every stratum once per pass and bounce") {

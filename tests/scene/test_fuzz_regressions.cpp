@@ -15,22 +15,13 @@
 
 using namespace strata;
 
-namespace {
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-}  // namespace
-
 TEST_CASE("fuzz regressions: every seed and every finding is accepted or refused cleanly") {
     size_t findings = 0;
     for (const char* folder : {"tests/fuzz/corpus", "tests/fuzz/findings"}) {
         for (const auto& entry : std::filesystem::directory_iterator(test::sourceDir() / folder)) {
             const std::string name = entry.path().filename().string();
             CAPTURE(name);
-            CHECK_NOTHROW(fuzz::parseLoaderInput(slurp(entry.path())));
+            CHECK_NOTHROW(fuzz::parseLoaderInput(test::fileBytes(entry.path())));
             findings += std::string(folder).find("findings") != std::string::npos;
         }
     }

@@ -14,13 +14,6 @@ using namespace strata;
 
 namespace {
 
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::string errorOf(const std::filesystem::path& path) {
     try {
         sceneFormatOf(path);
@@ -86,7 +79,7 @@ TEST_CASE("scene formats: a bundle read from disk parses from memory, on any hos
     REQUIRE(read.files.size() == 2);
     CHECK(read.files[0].name == "glossy.obj");
     CHECK(read.files[1].name == "glossy.mtl");
-    CHECK(read.files[0].bytes == slurp(obj));
+    CHECK(read.files[0].bytes == test::fileBytes(obj));
     REQUIRE(read.description);
     CHECK(read.description->name == "glossy.json");
     CHECK_FALSE(read.camera);
@@ -100,8 +93,8 @@ TEST_CASE("scene formats: a bundle read from disk parses from memory, on any hos
                                        "glossy.mtl"));
     // The same bundle written by hand.
     const SceneBundle byHand{"glossy.obj",
-                             {{"glossy.obj", slurp(obj)},
-                              {"glossy.mtl", slurp(test::sourceDir() / "assets/glossy/glossy.mtl")}},
+                             {{"glossy.obj", test::fileBytes(obj)},
+                              {"glossy.mtl", test::fileBytes(test::sourceDir() / "assets/glossy/glossy.mtl")}},
                              std::nullopt,
                              std::nullopt};
     checkSameMesh(parseSceneMesh(byHand), fromMemory);
