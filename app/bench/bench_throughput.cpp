@@ -18,46 +18,13 @@
 #include "sampling/random.h"
 #include "bench/ray_throughput.h"
 #include "bench/reference_cache.h"
+#include "bench/render_rate.h"
 #include "scene/scene_loader.h"
 #include "sampling/strata24.h"
 #include "sampling/stratum_schedule.h"
 
 namespace strata {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Wall and CPU time: the machine is shared, so ratios between measurements taken at different
-// moments use CPU time (work per CPU-second), and wall time shows what a user waits.
-struct RenderRate {
-    double seconds = 0.0;
-    double cpuSeconds = 0.0;
-    uint64_t paths = 0;
-    uint64_t rays = 0;
-    double mpathsPerSecond() const { return paths / seconds * 1e-6; }
-    double mraysPerSecond() const { return rays / seconds * 1e-6; }
-    double mpathsPerCpuSecond() const { return paths / cpuSeconds * 1e-6; }
-    double mraysPerCpuSecond() const { return rays / cpuSeconds * 1e-6; }
-};
-
-// Renders `passes` whole passes (after one untimed warm-up pass) and times them.
-RenderRate measureRender(const Scene& scene, const Camera& camera, const RenderOptions& options,
-                         uint32_t passes) {
-    RenderSession session(scene, camera, options.renderSettings(scene));
-    session.run({kPathsPerPass});
-    const RenderCounters before = session.counters();
-    const double cpuStart = processCpuSeconds();
-    const auto start = Clock::now();
-    session.run({(1 + passes) * kPathsPerPass});
-    const RenderCounters after = session.counters();
-    return {secondsSince(start), processCpuSeconds() - cpuStart, after.paths - before.paths,
-            after.rays - before.rays};
-}
-
 Camera cameraOfWidth(const LoadedScene& loaded, int width) {
     const int height = std::max(1, static_cast<int>(std::lround(
         static_cast<double>(width) * loaded.settings.height / loaded.settings.width)));
