@@ -93,8 +93,8 @@ std::string runPeerComparison(const PeerSettings& settings) {
     }
 
     std::vector<Entrant> entrants = {
-        {"strata render", renderCommandLine(strata, settings.spp, strataImage), {}, {}, {}},
-        {kEmbreePathTracer, embreeArgs, {}, {}, {}}};
+        {"strata render", renderCommandLine(strata, settings.spp, strataImage), {}, {}, {}, {}},
+        {kEmbreePathTracer, embreeArgs, {}, {}, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "vs-embree")) {
         return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" + *failed + "` failed (see " +
                log.string() + "; Debian package embree-tools).\n";

@@ -67,10 +67,10 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
 
     ViewReports viewReports, splitReports;
     std::vector<Entrant> entrants = {
-        {"strata render", renderCommandLine(batch, settings.spp), {}, {}, {}},
-        {"strata view --headless", view, [&](const auto& log) { return viewReports.read(log); }, {}, {}},
+        {"strata render", renderCommandLine(batch, settings.spp), {}, {}, {}, {}},
+        {"strata view --headless", view, [&](const auto& log) { return viewReports.read(log); }, {}, {}, {}},
         {"strata view --headless (split view)", splitView,
-         [&](const auto& log) { return splitReports.read(log); }, {}, {}}};
+         [&](const auto& log) { return splitReports.read(log); }, {}, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "viewer")) {
         return kTitle + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
     }
