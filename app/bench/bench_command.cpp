@@ -12,6 +12,7 @@
 #include "bench/bench_output.h"
 #include "bench/bench_peer.h"
 #include "bench/bench_ranks.h"
+#include "bench/bench_real_scenes.h"
 #include "bench/bench_throughput.h"
 #include "bench/bench_viewer.h"
 #include "bundled_assets.h"
@@ -37,6 +38,7 @@ struct BenchCommand {
     int referenceSpp = 0;
     bool vsEmbree = false;
     bool skipThroughput = false;
+    bool skipRealScenes = false;
     uint64_t seed = 0;
     int threads = 0;
 
@@ -46,6 +48,13 @@ struct BenchCommand {
 // The shared scene collection: an optional extra for the full suite, read when the working
 // directory has a sibling shared/ (a checkout beside the collection, run from its root).
 const fs::path kSharedScenes = fs::path("..") / "shared" / "scenes";
+
+// The Cornell box the speed sections measure: the shared collection's in the full suite when it
+// is there, else the bundled one.
+fs::path cornellBox(bool quick) {
+    const fs::path shared = kSharedScenes / "cornell" / "scene.obj";
+    return (!quick && fs::is_regular_file(shared)) ? shared : bundledScene("cornell");
+}
 
 // Every FOLDER/*/*.obj, sorted.
 std::vector<fs::path> scenesIn(const fs::path& folder) {
@@ -151,10 +160,7 @@ void BenchCommand::run() const {
 
     if (!skipThroughput) {
         ThroughputSettings throughput;
-        const fs::path shared = kSharedScenes / "cornell" / "scene.obj";
-        throughput.scene = !scenes.empty() ? fs::path(scenes.front())
-                           : (!quick && fs::is_regular_file(shared)) ? shared
-                                                                     : bundledScene("cornell");
+        throughput.scene = !scenes.empty() ? fs::path(scenes.front()) : cornellBox(quick);
         throughput.depth = depths.front();
         throughput.threads = threads;
         throughput.quick = quick;
@@ -184,6 +190,20 @@ void BenchCommand::run() const {
             viewer.repeats = 1;
         }
         summary += runViewerComparison(viewer);
+    }
+    if (!skipRealScenes) {
+        RealScenesSettings real;
+        real.baseline = cornellBox(quick);
+        real.depth = depths.front();
+        real.threads = threads;
+        real.outDir = out;
+        if (quick) {
+            real.width = 96;
+            real.height = 72;
+            real.ratePasses = 1;
+            real.repeats = 1;
+        }
+        summary += runRealScenes(real);
     }
     if (!quick) {
         RankSettings ranks;
@@ -223,6 +243,8 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--vs-embree", command->vsEmbree,
                   "Also race Embree's tutorial pathtracer on ../shared/scenes/cornell_point");
     sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
+    sub->add_flag("--skip-real-scenes", command->skipRealScenes,
+                  "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
     sub->callback([command] { command->run(); });

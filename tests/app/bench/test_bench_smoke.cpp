@@ -78,4 +78,23 @@ TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as sp
         CHECK(std::stod(rows[2][1]) > 0.0);
         CHECK(result.out.find("UI frame times while rendering the split view") != std::string::npos);
     }
+
+    // The real scenes: their table beside the Cornell box's row, or, without assimp-testmodels
+    // installed, the note saying so.
+    const size_t real = result.out.find("### Real scenes:");
+    REQUIRE(real != std::string::npos);
+    if (result.out.compare(result.out.find('\n', real) + 2, 8, "Skipped:") == 0) {
+        CHECK(result.out.find("assimp-testmodels", real) != std::string::npos);
+    } else {
+        const auto rows = readCsv(dir / "real-scenes.csv");
+        REQUIRE(rows.size() >= 3);  // header, the Cornell box, at least one model
+        CHECK(rows[1][0] == "Cornell box");
+        for (size_t r = 1; r < rows.size(); ++r) {
+            INFO(rows[r][0]);
+            CHECK(std::stoul(rows[r][1]) > 0);    // triangles
+            CHECK(std::stod(rows[r][5]) > 0.0);   // first image, s
+            CHECK(std::stod(rows[r][6]) > 0.0);   // Mpaths/CPU-s
+            CHECK(std::stod(rows[r][8]) > 0.0);   // peak RSS, MiB
+        }
+    }
 }

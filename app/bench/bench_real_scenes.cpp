@@ -1,0 +1,122 @@
+#include "bench/bench_real_scenes.h"
+
+#include <algorithm>
+#include <tbb/info.h>
+#include <vector>
+
+#include "bench/bench_output.h"
+#include "bench/bench_race.h"
+#include "bench/render_rate.h"
+#include "bench/strata_child.h"
+#include "scene/scene_format.h"
+
+namespace strata {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTitle = "\n### Real scenes: loading, BVH build, first image, throughput, memory\n\n";
+
+// Where Debian's assimp-testmodels installs them: read in place, never copied into the repository.
+const fs::path kAssimpModels = "/usr/share/assimp/models";
+
+struct RealScene {
+    std::string name;
+    fs::path path;
+};
+
+// The phases before the first path, timed apart in this process: the files read, their format
+// parsed into a mesh, the Scene built from it (Embree's BVH, the emitter tables).
+struct LoadTiming {
+    double readSeconds = 0.0;
+    double parseSeconds = 0.0;
+    double buildSeconds = 0.0;
+    size_t triangles = 0;
+};
+
+LoadTiming timeLoading(const RenderOptions& options) {
+    LoadTiming timing;
+    auto start = Clock::now();
+    const SceneBundle bundle = options.readSceneBundle();
+    timing.readSeconds = secondsSince(start);
+    start = Clock::now();
+    MeshData mesh = parseSceneFile(bundle).mesh;
+    timing.parseSeconds = secondsSince(start);
+    start = Clock::now();
+    const Scene scene(std::move(mesh));
+    timing.buildSeconds = secondsSince(start);
+    timing.triangles = scene.summary().triangles;
+    return timing;
+}
+
+}  // namespace
+
+std::string runRealScenes(const RealScenesSettings& settings) {
+    const fs::path engine = kAssimpModels / "glTF2" / "2CylinderEngine-glTF-Binary" / "2CylinderEngine.glb";
+    const fs::path spider = kAssimpModels / "OBJ" / "spider.obj";
+    if (!fs::is_regular_file(engine) && !fs::is_regular_file(spider)) {
+        return kTitle + "Skipped: the models of assimp-testmodels are not installed "
+                        "(apt-get install assimp-testmodels).\n";
+    }
+    std::vector<RealScene> scenes = {{"Cornell box", settings.baseline}};
+    std::string missing;
+    for (const RealScene& s : {RealScene{"2CylinderEngine", engine}, RealScene{"spider", spider}}) {
+        if (fs::is_regular_file(s.path)) {
+            scenes.push_back(s);
+        } else {
+            missing += "Skipped: " + s.path.string() + " not installed (apt-get install assimp-testmodels).\n";
+        }
+    }
+
+    const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+    RenderOptions options;
+    options.sampler = "strata24";
+    options.depth = settings.depth;
+    options.threads = threads;
+    options.width = settings.width;  // one size for all: the same paths per image
+    options.height = settings.height;
+
+    // Whole processes, alternated: start-up, loading, the build and the first image, as a user
+    // waits for them.
+    std::vector<Entrant> renders;
+    for (const RealScene& s : scenes) {
+        RenderOptions o = options;
+        o.scene = s.path.string();
+        renders.push_back({s.name, renderCommandLine(o, settings.spp), {}, {}, {}, {}});
+    }
+    const fs::path log = settings.outDir / "real-scenes.log";
+    if (const auto failed = race(renders, settings.repeats, log, "real scenes")) {
+        return kTitle + "Skipped: `strata render` of " + *failed + " failed (see " + log.string() + ").\n";
+    }
+
+    Table table{{"scene", "triangles", "read ms", "parse ms", "BVH build ms", "first image s",
+                 "Mpaths/CPU-s", "vs Cornell box", "peak RSS MiB"}, {}};
+    double baselineRate = 0.0;
+    for (size_t k = 0; k < scenes.size(); ++k) {
+        RenderOptions o = options;
+        o.scene = scenes[k].path.string();
+        const LoadTiming loading = timeLoading(o);
+        const LoadedScene loaded = o.loadScene();
+        const RenderRate rate = measureRender(loaded.scene, o.makeCamera(loaded), o,
+                                              static_cast<uint32_t>(settings.ratePasses));
+        if (k == 0) baselineRate = rate.mpathsPerCpuSecond();
+        const long peakKiB = *std::max_element(renders[k].peakRssKiB.begin(), renders[k].peakRssKiB.end());
+        table.add({scenes[k].name, std::to_string(loading.triangles), cell("%.1f", loading.readSeconds * 1e3),
+                   cell("%.1f", loading.parseSeconds * 1e3), cell("%.1f", loading.buildSeconds * 1e3),
+                   cell("%.3f", renders[k].medianWall()), cell("%.3f", rate.mpathsPerCpuSecond()),
+                   cell("%.3f", rate.mpathsPerCpuSecond() / baselineRate), cell("%.1f", peakKiB / 1024.0)});
+    }
+    writeTextFile(settings.outDir / "real-scenes.csv", table.csv());
+    // cell() formats at most 255 characters: the note is put together from short pieces.
+    return kTitle +
+           cell("%dx%d, depth %d, strata24, %s. ", settings.width, settings.height, settings.depth,
+                threadsText(threads).c_str()) +
+           "Read, parse and BVH build: in this process, once. " +
+           cell("First image: `strata render --spp %d`, the whole process, median of %d alternated "
+                "run(s); peak RSS: the largest of those runs. ", settings.spp, settings.repeats) +
+           cell("Mpaths/CPU-s: in this process, %d pass(es) after a warm-up. ", settings.ratePasses) +
+           "Scenes without lights render under the default white sky.\n\n" +
+           table.markdown() + (missing.empty() ? "" : "\n" + missing);
+}
+
+}  // namespace strata
