@@ -8,6 +8,7 @@
 #include "lights/environment_map_light.h"
 #include "lights/uniform_environment_light.h"
 #include "util/error.h"
+#include "util/text_file.h"
 
 namespace strata {
 namespace {
@@ -55,13 +56,18 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
 }
 
 EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
-    Image map = readExr(path);
+    if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
+    return readEnvironmentMap(readTextFile(path, "EXR file"), path.string());
+}
+
+EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name) {
+    Image map = readExr(bytes, name);
     if (map.width != 2 * map.height) {
-        throw Error(path.string() + ": an environment map must be a latitude-longitude image twice as "
+        throw Error(name + ": an environment map must be a latitude-longitude image twice as "
                     "wide as high, got " + std::to_string(map.width) + "x" + std::to_string(map.height));
     }
     const auto refuse = [&](size_t i, const char* what) {
-        throw Error(path.string() + ": texel (" + std::to_string(i % map.width) + ", " +
+        throw Error(name + ": texel (" + std::to_string(i % map.width) + ", " +
                     std::to_string(i / map.width) + ") is " + what + "; an environment map holds radiances");
     };
     double sum = 0.0;
