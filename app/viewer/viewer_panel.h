@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "display_pipeline.h"
+#include "lights/environment.h"
 #include "render_worker.h"
 
 namespace strata::viewer {
@@ -31,6 +32,9 @@ struct ViewerSettings {
     float targetSeconds = 0.0f;   // render time; 0: no limit
     bool paused = false;
     DisplaySettings display;
+    // The environment given on the command line (--env options) or by an .exr opened since:
+    // every scene opened takes it in place of its own; Default: each scene keeps its own.
+    Environment environment;
 
     // The sides the worker renders in the current mode.
     std::vector<SideConfig> sides() const;
