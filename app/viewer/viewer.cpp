@@ -34,6 +34,7 @@ Viewer::Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& s
       settings_(settings),
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
     panel_.setScenePath(scene_->scenePath().string());
+    panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
 }
 
 void Viewer::openScene(const std::filesystem::path& path) {
@@ -56,6 +57,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
         scene_ = std::make_shared<const LoadedScene>(std::move(loaded));
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
         panel_.setScenePath(path.string());
+        panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
         const size_t warnings = scene_->report.warnings.size();
         std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
         panel_.setMessage("opened " + path.string() +

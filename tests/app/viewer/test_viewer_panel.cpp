@@ -173,6 +173,7 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     const auto dir = test::scratchDir("viewer-environment-map");
     Harness h(smallSingleView(), writeUnlitQuad(dir));
     REQUIRE(h.viewer.workerConfig().scene->scene.lights().litByDefault());
+    CHECK(describeEnvironment(h.viewer.workerConfig().scene->scene) == "default white sky: the scene has no light");
     writeImage(dir / "sky.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.5f))});
     h.viewer.openScene(dir / "sky.exr");
     h.frame();
@@ -182,6 +183,7 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     CHECK(relit->scenePath() == dir / "grey.obj");
     CHECK(h.viewer.panel().message() == "environment " + (dir / "sky.exr").string());
     CHECK(h.viewer.settings().environment.kind == Environment::Kind::Map);
+    CHECK(describeEnvironment(relit->scene) == "map 4x2 turned 0 degrees");
 
     writeImage(dir / "square.exr", Image{2, 2, std::vector<glm::vec3>(4, glm::vec3(1.0f))});
     h.viewer.openScene(dir / "square.exr");
@@ -208,6 +210,21 @@ TEST_CASE("the command line's environment lights every scene the viewer opens") 
     CHECK(opened->scenePath() == dir / "grey.obj");
     CHECK(opened->scene.lights().size() == 0);
     CHECK(!opened->scene.lights().litByDefault());
+    CHECK(describeEnvironment(opened->scene) == "none");
+}
+
+TEST_CASE("the panel shows the open scene's load summary and its warnings") {
+    Harness h(smallSingleView());
+    CHECK(h.viewer.panel().sceneSummary() == describeScene(*h.viewer.workerConfig().scene));
+    CHECK(h.viewer.panel().sceneWarnings().empty());
+    const auto dir = test::scratchDir("viewer-scene-report");
+    std::ofstream(dir / "s.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n";
+    h.viewer.openScene(dir / "s.obj");
+    h.frame();
+    CHECK(h.viewer.panel().sceneSummary().find("s.obj: 1 triangles") != std::string::npos);
+    CHECK(h.viewer.panel().sceneSummary().find(", 1 warning") != std::string::npos);
+    CHECK(h.viewer.panel().sceneWarnings() ==
+          "warning: " + (dir / "s.obj").string() + ":4: material 'red' is not defined; using grey Kd 0.8\n");
 }
 
 TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sliders") {
