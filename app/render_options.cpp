@@ -149,7 +149,9 @@ Environment RenderOptions::environment() const {
 
 LoadedScene RenderOptions::parseScene(SceneBundle files) const {
     LoadedScene loaded = strata::parseScene(std::move(files));
-    loaded.scene.setEnvironment(environment());
+    // The --env options override the scene description's environment; without them it stands.
+    const Environment given = environment();
+    if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
     return loaded;
 }
 

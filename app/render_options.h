@@ -45,7 +45,8 @@ struct RenderOptions {
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
     Environment environment() const;
-    // Builds the scene from its files under environment().
+    // Builds the scene from its files; environment(), when the options give one, overrides the
+    // scene description's.
     LoadedScene parseScene(SceneBundle files) const;
     // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;

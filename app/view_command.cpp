@@ -51,6 +51,7 @@ void ViewCommand::run() const {
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
     viewer::ViewerSettings viewerSettings;
+    viewerSettings.environment = render.environment();
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;

@@ -34,14 +34,30 @@ Viewer::Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& s
       settings_(settings),
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
     panel_.setScenePath(scene_->scenePath().string());
+    panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
 }
 
 void Viewer::openScene(const std::filesystem::path& path) {
+    if (path.extension() == ".exr") {
+        try {
+            Environment environment;
+            environment.kind = Environment::Kind::Map;
+            environment.map = readEnvironmentMap(path).map;
+            relight(environment);
+            settings_.environment = environment;
+            panel_.setMessage("environment " + path.string());
+        } catch (const std::exception& e) {
+            panel_.setMessage(std::string("cannot use environment map: ") + e.what());
+        }
+        return;
+    }
     try {
-        auto loaded = std::make_shared<const LoadedScene>(loadScene(path));
-        scene_ = std::move(loaded);
+        LoadedScene loaded = loadScene(path);
+        if (settings_.environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(settings_.environment);
+        scene_ = std::make_shared<const LoadedScene>(std::move(loaded));
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
         panel_.setScenePath(path.string());
+        panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
         const size_t warnings = scene_->report.warnings.size();
         std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
         panel_.setMessage("opened " + path.string() +
@@ -49,6 +65,12 @@ void Viewer::openScene(const std::filesystem::path& path) {
     } catch (const std::exception& e) {
         panel_.setMessage(std::string("cannot open scene: ") + e.what());
     }
+}
+
+void Viewer::relight(const Environment& environment) {
+    LoadedScene relit = parseScene(scene_->bundle);
+    relit.scene.setEnvironment(environment);
+    scene_ = std::make_shared<const LoadedScene>(std::move(relit));
 }
 
 void Viewer::loadReference(const std::filesystem::path& exrPath) {

@@ -25,8 +25,10 @@ public:
     // One UI frame. The caller has started the ImGui platform frame (io.DisplaySize, input).
     void frame(const FrameTarget& target);
 
-    // Loads a scene file of any registered format; on failure (an unknown extension too) the old
-    // scene stays and the panel shows why.
+    // Loads a scene file of any registered format, under settings().environment when that is
+    // given; an .exr is instead read as the environment map, which relights the open scene and
+    // the scenes opened after it. On failure (an unknown extension too) the old scene and
+    // environment stay and the panel shows why.
     void openScene(const std::filesystem::path& path);
     void loadReference(const std::filesystem::path& exrPath);
 
@@ -40,6 +42,8 @@ public:
     const WorkerSnapshot* shownSnapshot() const { return shown_.get(); }
 
 private:
+    // The open scene rebuilt from its files under `environment`: the shared scene is immutable.
+    void relight(const Environment& environment);
     void handleDivider(const ImGuiIO& io, const FrameTarget& target);
     void drawOverlays(const FrameTarget& target);
     void applyActions(const PanelActions& actions);

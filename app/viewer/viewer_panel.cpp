@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "error_plot.h"
+#include "io/image_io.h"
 #include "integrator/progressive_renderer.h"
 #include "scene/scene.h"
 #include "integrator/truncation.h"
@@ -41,6 +42,30 @@ void ViewerPanel::remember(const std::string& name, bool labelled) {
     Rect rect{ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
     if (labelled) rect.max.x = rect.min.x + ImGui::CalcItemWidth();
     controls_[name] = rect;
+}
+
+void ViewerPanel::setSceneReport(std::string summary, std::string warnings) {
+    sceneSummary_ = std::move(summary);
+    sceneWarnings_ = std::move(warnings);
+}
+
+std::string describeEnvironment(const Scene& scene) {
+    if (scene.lights().litByDefault()) return "default white sky: the scene has no light";
+    const Environment& environment = scene.mesh().environment;
+    char text[128];
+    switch (environment.kind) {
+        case Environment::Kind::Uniform:
+            std::snprintf(text, sizeof text, "uniform (%.3g, %.3g, %.3g)", environment.radiance.x,
+                          environment.radiance.y, environment.radiance.z);
+            return text;
+        case Environment::Kind::Map:
+            std::snprintf(text, sizeof text, "map %dx%d turned %.3g degrees", environment.map->width,
+                          environment.map->height, environment.rotationDegrees);
+            return text;
+        case Environment::Kind::Default:
+        case Environment::Kind::None: break;
+    }
+    return "none";
 }
 
 void ViewerPanel::setScenePath(const std::string& path) {
@@ -179,6 +204,9 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         actions.saveExr = ImGui::Button("save EXR");
         remember("save EXR", false);
     }
+    ImGui::TextWrapped("%s", sceneSummary_.c_str());
+    if (!sceneWarnings_.empty()) ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "%s", sceneWarnings_.c_str());
+    ImGui::TextWrapped("environment: %s", describeEnvironment(scene).c_str());
     if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::PopItemWidth();
     ImGui::End();

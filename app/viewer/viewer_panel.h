@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "display_pipeline.h"
+#include "lights/environment.h"
 #include "render_worker.h"
 
 namespace strata::viewer {
@@ -31,6 +32,9 @@ struct ViewerSettings {
     float targetSeconds = 0.0f;   // render time; 0: no limit
     bool paused = false;
     DisplaySettings display;
+    // The environment given on the command line (--env options) or by an .exr opened since:
+    // every scene opened takes it in place of its own; Default: each scene keeps its own.
+    Environment environment;
 
     // The sides the worker renders in the current mode.
     std::vector<SideConfig> sides() const;
@@ -49,6 +53,12 @@ public:
     // Draws the panel for this frame; `snapshot` may be null before the first render. `scene` is
     // the one being rendered (its summary bounds the truncation error).
     PanelActions draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene);
+
+    // The open scene's load summary line and warnings (describeScene, describeWarnings), shown
+    // under its path.
+    void setSceneReport(std::string summary, std::string warnings);
+    const std::string& sceneSummary() const { return sceneSummary_; }
+    const std::string& sceneWarnings() const { return sceneWarnings_; }
 
     void setMessage(std::string message) { message_ = std::move(message); }
     const std::string& message() const { return message_; }
@@ -78,11 +88,17 @@ private:
     void errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
 
     std::string message_;
+    std::string sceneSummary_;
+    std::string sceneWarnings_;
     std::array<char, 1024> scenePath_{};
     std::array<char, 1024> referencePath_{};
     std::array<char, 1024> outputStem_{'s', 't', 'r', 'a', 't', 'a'};
     std::map<std::string, Rect> controls_;
 };
+
+// What rays that leave `scene` see, for the panel: "none", "uniform (r, g, b)", "map WxH turned
+// D degrees", or "default white sky: the scene has no light".
+std::string describeEnvironment(const Scene& scene);
 
 // Colours of the split view's two sides, shared by the labels and the plots.
 inline constexpr ImU32 kSideColours[2] = {IM_COL32(255, 140, 60, 255), IM_COL32(90, 200, 255, 255)};

@@ -1,5 +1,6 @@
 #include "io/image_io.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -8,11 +9,13 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <stb_image_write.h>
 
 #include "film/accumulation_buffer.h"
+#include "util/text_file.h"
 #include "util/error.h"
 
 namespace strata {
@@ -71,6 +74,26 @@ void writePng(const std::string& file, const Image& image, const PngSettings& se
     }
 }
 
+// An EXR file's bytes as OpenEXR's input stream, so that a bundle's copy decodes without a file.
+class MemoryStream final : public Imf::IStream {
+public:
+    MemoryStream(std::string_view bytes, const std::string& name) : Imf::IStream(name.c_str()), bytes_(bytes) {}
+    bool read(char c[], int n) override {
+        if (n < 0 || static_cast<uint64_t>(n) > bytes_.size() - position_) {
+            throw std::runtime_error("unexpected end of file");
+        }
+        std::copy_n(bytes_.data() + position_, n, c);
+        position_ += static_cast<uint64_t>(n);
+        return position_ < bytes_.size();
+    }
+    uint64_t tellg() override { return position_; }
+    void seekg(uint64_t position) override { position_ = std::min<uint64_t>(position, bytes_.size()); }
+
+private:
+    std::string_view bytes_;
+    uint64_t position_ = 0;
+};
+
 }  // namespace
 
 Image Image::fromMeans(const AccumulationBuffer& buffer) {
@@ -114,18 +137,23 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
 
 Image readExr(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
+    return readExr(readTextFile(path, "EXR file"), path.string());
+}
+
+Image readExr(std::string_view bytes, const std::string& name) {
     try {
-        Imf::InputFile in(path.string().c_str());
+        MemoryStream stream(bytes, name);
+        Imf::InputFile in(stream);
         const Imath::Box2i window = in.header().dataWindow();
         Image image;
         image.width = window.max.x - window.min.x + 1;
         image.height = window.max.y - window.min.y + 1;
         if (image.width < 1 || image.height < 1 || image.width > 65536 || image.height > 65536) {
-            throw Error(path.string() + ": unreasonable image size");
+            throw Error(name + ": unreasonable image size");
         }
         for (const char* channel : {"R", "G", "B"}) {
             if (!in.header().channels().findChannel(channel)) {
-                throw Error(path.string() + ": no " + channel + " channel");
+                throw Error(name + ": no " + channel + " channel");
             }
         }
         image.pixels.resize(static_cast<size_t>(image.width) * image.height);
@@ -146,7 +174,7 @@ Image readExr(const std::filesystem::path& path) {
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
-        throw Error(path.string() + ": not a readable EXR file (" + e.what() + ")");
+        throw Error(name + ": not a readable EXR file (" + e.what() + ")");
     }
 }
 

@@ -4,6 +4,8 @@
 // only when complete, so a failed or interrupted write never leaves a half-written output.
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 #include <glm/vec3.hpp>
 
@@ -36,5 +38,8 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
                   const std::vector<uint8_t>& rgb);
 // Reads the R, G, B channels of an EXR file as linear float; throws strata::Error naming the file.
 Image readExr(const std::filesystem::path& path);
+// The same from an EXR file's bytes, as a scene bundle carries them; `name` stands for the file
+// in messages.
+Image readExr(std::string_view bytes, const std::string& name);
 
 }  // namespace strata

@@ -14,6 +14,38 @@ namespace {
 
 float maxComponent(const glm::vec3& v) { return std::max(std::max(v.x, v.y), v.z); }
 
+// readEnvironmentMap's checks, on the image read from the file `name` stands for.
+EnvironmentMapFile checkedMap(Image map, const std::string& name) {
+    if (map.width != 2 * map.height) {
+        throw Error(name + ": an environment map must be a latitude-longitude image twice as "
+                    "wide as high, got " + std::to_string(map.width) + "x" + std::to_string(map.height));
+    }
+    const auto refuse = [&](size_t i, const char* what) {
+        throw Error(name + ": texel (" + std::to_string(i % map.width) + ", " +
+                    std::to_string(i / map.width) + ") is " + what + "; an environment map holds radiances");
+    };
+    double sum = 0.0;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
+        const glm::vec3& texel = map.pixels[i];
+        if (!(std::isfinite(texel.x) && std::isfinite(texel.y) && std::isfinite(texel.z))) refuse(i, "not finite");
+        sum += static_cast<double>(texel.x) + texel.y + texel.z;
+    }
+    const double floor = -kNegativeNoise * sum / (3.0 * static_cast<double>(map.pixels.size()));
+    EnvironmentMapFile file;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            float& value = map.pixels[i][c];
+            if (value >= 0.0f) continue;
+            if (value < floor) refuse(i, "negative beyond lossy-compression noise");
+            value = 0.0f;
+            ++file.zeroedNegatives;
+        }
+    }
+    file.map = std::make_shared<const Image>(std::move(map));
+    return file;
+}
+
+
 }  // namespace
 
 Environment resolveEnvironment(const Environment& given, bool sceneHasLights) {
@@ -55,34 +87,11 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
 }
 
 EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
-    Image map = readExr(path);
-    if (map.width != 2 * map.height) {
-        throw Error(path.string() + ": an environment map must be a latitude-longitude image twice as "
-                    "wide as high, got " + std::to_string(map.width) + "x" + std::to_string(map.height));
-    }
-    const auto refuse = [&](size_t i, const char* what) {
-        throw Error(path.string() + ": texel (" + std::to_string(i % map.width) + ", " +
-                    std::to_string(i / map.width) + ") is " + what + "; an environment map holds radiances");
-    };
-    double sum = 0.0;
-    for (size_t i = 0; i < map.pixels.size(); ++i) {
-        const glm::vec3& texel = map.pixels[i];
-        if (!(std::isfinite(texel.x) && std::isfinite(texel.y) && std::isfinite(texel.z))) refuse(i, "not finite");
-        sum += static_cast<double>(texel.x) + texel.y + texel.z;
-    }
-    const double floor = -kNegativeNoise * sum / (3.0 * static_cast<double>(map.pixels.size()));
-    EnvironmentMapFile file;
-    for (size_t i = 0; i < map.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            float& value = map.pixels[i][c];
-            if (value >= 0.0f) continue;
-            if (value < floor) refuse(i, "negative beyond lossy-compression noise");
-            value = 0.0f;
-            ++file.zeroedNegatives;
-        }
-    }
-    file.map = std::make_shared<const Image>(std::move(map));
-    return file;
+    return checkedMap(readExr(path), path.string());
+}
+
+EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name) {
+    return checkedMap(readExr(bytes, name), name);
 }
 
 }  // namespace strata

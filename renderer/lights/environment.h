@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <glm/vec3.hpp>
 
 #include "lights/light.h"
@@ -52,5 +54,7 @@ struct EnvironmentMapFile {
 // finite and >= 0, lossy-compression noise read as 0. Throws strata::Error naming the file for
 // any other image: not 2:1, a texel more negative than that noise, or one not finite.
 EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
+// The same from the EXR file's bytes, as a scene bundle carries them; `name` stands for the file.
+EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name);
 
 }  // namespace strata

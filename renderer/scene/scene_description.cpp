@@ -5,6 +5,7 @@
 #include <limits>
 #include <string_view>
 #include <utility>
+#include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
@@ -122,6 +123,40 @@ void forEachEntry(const json& root, const char* key, const std::string& path, Re
     for (const json& entry : *entries) read(entry);
 }
 
+// "environment": "none", {"color": [r,g,b]} or {"file": "sky.exr", "rotate": degrees}.
+void readEnvironment(const json& root, const std::string& path, SceneDescription& description) {
+    const auto entry = root.find("environment");
+    if (entry == root.end()) return;
+    const auto refuse = [&](const std::string& why) { throw Error(path + ": \"environment\" " + why); };
+    constexpr const char* kForms =
+        "must be \"none\", {\"color\": [r,g,b]} or {\"file\": \"sky.exr\", \"rotate\": degrees}";
+    Environment& environment = description.environment;
+    if (entry->is_string()) {
+        if (entry->get<std::string>() != "none") refuse(kForms);
+        environment.kind = Environment::Kind::None;
+        return;
+    }
+    if (!entry->is_object() || entry->contains("file") == entry->contains("color")) refuse(kForms);
+    if (entry->contains("color")) {
+        environment.kind = Environment::Kind::Uniform;
+        environment.radiance = readVec3(*entry, "color", path);
+        if (!(glm::min(glm::min(environment.radiance.x, environment.radiance.y), environment.radiance.z) >= 0.0f)) {
+            refuse("\"color\" must be three radiances >= 0");
+        }
+        return;
+    }
+    const json& file = (*entry)["file"];
+    if (!file.is_string() || file.get<std::string>().empty()) refuse("\"file\" must be an EXR file's path");
+    const auto rotate = entry->find("rotate");
+    if (rotate != entry->end()) {
+        if (!rotate->is_number()) refuse("\"rotate\" must be a number (degrees)");
+        environment.rotationDegrees = readFloat(*rotate, "rotate", path);
+    }
+    environment.kind = Environment::Kind::Map;
+    description.environmentFile = file.get<std::string>();
+    description.files.push_back(description.environmentFile);
+}
+
 enum class FileRole { SceneDescription, CameraFile };
 
 SceneDescription parse(const std::string& text, const std::string& path, FileRole role) {
@@ -133,6 +168,7 @@ SceneDescription parse(const std::string& text, const std::string& path, FileRol
     description.camera.height = readSize(root, "height", description.camera.height, path);
     if (role == FileRole::SceneDescription) {
         forEachEntry(root, "lights", path, [&](const json& entry) { readLight(entry, path, description); });
+        readEnvironment(root, path, description);
     }
     forEachEntry(root, "point_lights", path, [&](const json& entry) {
         if (!entry.is_object()) throw Error(path + ": each of \"point_lights\" must be an object");

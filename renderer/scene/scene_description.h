@@ -6,11 +6,15 @@
 //           then frames the scene), "width", "height": the image size in pixels (default 256)
 //   "lights": [{"type": "point", "position": [x,y,z], "intensity": [r,g,b]}]   intensity in W/sr
 //   "point_lights": [{"position": [x,y,z], "intensity": [r,g,b]}]   point lights, the older key
+//   "environment": what rays that leave the scene see (lights/environment.h): "none",
+//           {"color": [r,g,b]} a uniform radiance, or {"file": "sky.exr", "rotate": degrees} a
+//           latitude-longitude map, its path relative to the description; --env options override it
 // A --camera file has the camera keys, all required, and may have "point_lights"; its "lights"
 // are not read: with --camera the lights are still the scene's.
 #include <string>
 #include <vector>
 
+#include "lights/environment.h"
 #include "scene/camera.h"
 #include "scene/mesh.h"
 
@@ -20,6 +24,10 @@ struct SceneDescription {
     CameraSettings camera;  // the image size, and the pose when hasPose
     bool hasPose = false;
     std::vector<PointLight> pointLights;
+    // Kind Default without the key. A map's image is not read here: its file, one of `files`, is
+    // environmentFile, which parseScene decodes from the bundle.
+    Environment environment;
+    std::string environmentFile;
     // Files its entries refer to, relative to its folder: the scene's bundle carries them beside
     // the scene's own files (scene_format.h), so that every rank parses the same bytes.
     std::vector<std::string> files;

@@ -1,6 +1,7 @@
 #include "scene/scene_loader.h"
 
 #include <cstdio>
+#include <string>
 #include <system_error>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -26,6 +27,24 @@ CameraPose framingPose(const Scene& scene) {
 bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::error_code error;
     return std::filesystem::equivalent(a, b, error);
+}
+
+// The description's environment, a map decoded from the bundle's copy of its file, so that every
+// MPI rank lights the scene with the same bytes.
+Environment describedEnvironment(const SceneDescription& description, const SceneBundle& bundle,
+                                 LoadReport& report) {
+    Environment environment = description.environment;
+    if (environment.kind != Environment::Kind::Map) return environment;
+    const std::string name = bundle.pathOf(description.environmentFile);
+    const SceneFile* file = bundle.find(description.environmentFile);
+    if (!file) throw Error(name + ": no such EXR file (the scene description's \"environment\")");
+    const EnvironmentMapFile map = readEnvironmentMap(file->bytes, name);
+    if (map.zeroedNegatives > 0) {
+        report.warnings.push_back(name + ": " + std::to_string(map.zeroedNegatives) +
+                                  " slightly negative texel components (lossy compression) read as 0");
+    }
+    environment.map = map.map;
+    return environment;
 }
 
 }  // namespace
@@ -70,6 +89,7 @@ LoadedScene parseScene(SceneBundle bundle) {
     }
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
+    mesh.environment = describedEnvironment(description, bundle, report);
     CameraSettings settings = description.camera;
     bool posed = description.hasPose;
     if (bundle.camera) {

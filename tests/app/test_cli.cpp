@@ -181,3 +181,24 @@ TEST_CASE("cli: --epsilon picks the depth from the truncation bound") {
     CHECK(nlohmann::json::parse(result.out)["depth"] == 10);
     CHECK(result.err.find("depth K = 10") != std::string::npos);
 }
+
+TEST_CASE("cli: --env overrides the scene description's environment, which stands without it") {
+    const auto dir = test::scratchDir("cli-described-sky");
+    // The grey square of albedo 0.5 filling the view, under the description's sky of 2.
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20,)"
+                                        R"("environment":{"color":[2,2,2]}})";
+    const std::string render = "render " + (dir / "grey.obj").string() +
+                               " --sampler cosine --depth 2 --spp 24 --width 4 --height 4 --json";
+    const auto described = test::runStrata(render);
+    REQUIRE(described.exitCode == 0);
+    CHECK(described.err.find("note: the scene has no light") == std::string::npos);
+    CHECK(nlohmann::json::parse(described.out)["mean_rgb"][1].get<double>() == doctest::Approx(1.0).epsilon(1e-6));
+    const auto coloured = test::runStrata(render + " --env-color 4 4 4");
+    REQUIRE(coloured.exitCode == 0);
+    CHECK(nlohmann::json::parse(coloured.out)["mean_rgb"][1].get<double>() == doctest::Approx(2.0).epsilon(1e-6));
+    const auto dark = test::runStrata(render + " --env none --no-early-out");
+    REQUIRE(dark.exitCode == 0);
+    CHECK(nlohmann::json::parse(dark.out)["mean_rgb"][1].get<double>() == 0.0);
+}

@@ -96,3 +96,35 @@ TEST_CASE("scene description: a camera file must give the camera, and lends only
     // Its lights are not read, so a type only a later version knows is no error there.
     CHECK_NOTHROW(parseCameraFile("{" + kPose + R"(,"lights":[{"type":"spot"}]})", "cam.json"));
 }
+
+TEST_CASE("scene description: the environment is none, a colour or a map file that travels with it") {
+    CHECK(parseSceneDescription("{}", "s.json").environment.kind == Environment::Kind::Default);
+    CHECK(parseSceneDescription(R"({"environment":"none"})", "s.json").environment.kind ==
+          Environment::Kind::None);
+    const SceneDescription colour = parseSceneDescription(R"({"environment":{"color":[0.5,1,2]}})", "s.json");
+    CHECK(colour.environment.kind == Environment::Kind::Uniform);
+    CHECK(colour.environment.radiance == glm::vec3(0.5f, 1.0f, 2.0f));
+    CHECK(colour.files.empty());
+    const SceneDescription map =
+        parseSceneDescription(R"({"environment":{"file":"sky/sky.exr","rotate":30}})", "s.json");
+    CHECK(map.environment.kind == Environment::Kind::Map);
+    CHECK(map.environment.rotationDegrees == 30.0f);
+    CHECK(map.environment.map == nullptr);  // parseScene decodes it from the bundle
+    CHECK(map.environmentFile == "sky/sky.exr");
+    CHECK(map.files == std::vector<std::string>{"sky/sky.exr"});
+}
+
+TEST_CASE("scene description: a bad environment names the file and the key") {
+    const std::string forms =
+        R"(s.json: "environment" must be "none", {"color": [r,g,b]} or {"file": "sky.exr", "rotate": degrees})";
+    CHECK(errorOf(R"({"environment":"sky"})") == forms);
+    CHECK(errorOf(R"({"environment":3})") == forms);
+    CHECK(errorOf(R"({"environment":{}})") == forms);
+    CHECK(errorOf(R"({"environment":{"file":"a.exr","color":[1,1,1]}})") == forms);
+    CHECK(errorOf(R"({"environment":{"color":[1,-1,1]}})") ==
+          R"(s.json: "environment" "color" must be three radiances >= 0)");
+    CHECK(errorOf(R"({"environment":{"color":[1,1]}})") == R"(s.json: "color" must be an array of 3 numbers)");
+    CHECK(errorOf(R"({"environment":{"file":""}})") == R"(s.json: "environment" "file" must be an EXR file's path)");
+    CHECK(errorOf(R"({"environment":{"file":"a.exr","rotate":"x"}})") ==
+          R"(s.json: "environment" "rotate" must be a number (degrees))");
+}

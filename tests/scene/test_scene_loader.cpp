@@ -3,8 +3,12 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 
+#include "film/accumulation_buffer.h"
+#include "io/image_io.h"
+#include "lights/environment.h"
 #include "util/error.h"
 #include "scene/scene_loader.h"
+#include "render_support.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -122,4 +126,70 @@ TEST_CASE("scene loader: every bundled and shared scene loads, with the point li
     const LoadedScene point = loadScene(test::sharedDir() / "scenes/cornell_point/scene.obj");
     REQUIRE(point.scene.mesh().pointLights.size() == 1);
     CHECK(point.scene.mesh().pointLights[0].intensity == glm::vec3(30000.0f));
+}
+
+namespace {
+
+// A grey quad that emits nothing, seen from above with sky around it, and a 2:1 map brighter
+// towards +x; the description is s.json.
+void writeSkyScene(const std::filesystem::path& dir, const std::string& description) {
+    std::ofstream(dir / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl grey\n"
+                                    "f 1 3 2\nf 1 4 3\n";
+    std::ofstream(dir / "s.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "s.json") << std::string("{") + kPose + R"(,"width":8,"height":8)" + description + "}";
+    Image sky{8, 4, std::vector<glm::vec3>(32)};
+    for (int i = 0; i < 32; ++i) sky.pixels[i] = glm::vec3(0.25f * (i % 8), 0.5f, 1.0f);
+    std::filesystem::create_directories(dir / "maps");
+    writeImage(dir / "maps/sky.exr", sky);
+}
+
+double renderedMean(const LoadedScene& loaded) {
+    const AccumulationBuffer buffer = test::renderPasses(
+        loaded.scene, Camera(loaded.settings.pose, loaded.settings.width, loaded.settings.height),
+        {{2, SamplerKind::Cosine, false}, 5, 1}, 2);
+    double sum = 0.0;
+    for (size_t i = 0; i < buffer.pixelCount(); ++i) sum += buffer.mean(i).x;
+    return sum / static_cast<double>(buffer.pixelCount());
+}
+
+}  // namespace
+
+TEST_CASE("scene loader: a description's environment map travels in the bundle and lights like --env") {
+    const auto dir = test::scratchDir("scene-environment");
+    writeSkyScene(dir, R"(,"environment":{"file":"maps/sky.exr","rotate":30})");
+    SceneBundle bundle = readSceneBundle(dir / "s.obj");
+    REQUIRE(bundle.find("maps/sky.exr"));
+    CHECK(bundle.find("maps/sky.exr")->bytes == test::fileBytes(dir / "maps/sky.exr"));
+    // Parsed from the bundle alone, as another MPI rank would: the file on disk is gone.
+    std::filesystem::remove(dir / "maps/sky.exr");
+    const LoadedScene described = parseScene(bundle);
+    CHECK(!described.scene.lights().litByDefault());
+
+    writeSkyScene(dir, "");
+    LoadedScene given = loadScene(dir / "s.obj");
+    const double defaultSky = renderedMean(given);
+    Environment environment;
+    environment.kind = Environment::Kind::Map;
+    environment.map = readEnvironmentMap(dir / "maps/sky.exr").map;
+    environment.rotationDegrees = 30.0f;
+    given.scene.setEnvironment(environment);
+    CHECK(described.scene.lights().size() == given.scene.lights().size());
+    CHECK(described.scene.lights().maxRadianceAtInfinity() == given.scene.lights().maxRadianceAtInfinity());
+    const double mean = renderedMean(described);
+    CHECK(mean == renderedMean(given));
+    CHECK(mean != defaultSky);
+}
+
+TEST_CASE("scene loader: a description's environment file that is missing or not a map is named") {
+    const auto dir = test::scratchDir("scene-environment-bad");
+    writeSkyScene(dir, R"(,"environment":{"file":"absent.exr"})");
+    CHECK_THROWS_WITH_AS(readSceneBundle(dir / "s.obj"),
+                         doctest::Contains("absent.exr: cannot open file (named by"), Error);
+    writeSkyScene(dir, R"(,"environment":{"file":"s.mtl"})");
+    CHECK_THROWS_WITH_AS(loadScene(dir / "s.obj"), doctest::Contains("s.mtl: not a readable EXR file"), Error);
+    writeImage(dir / "square.exr", Image{4, 4, std::vector<glm::vec3>(16, glm::vec3(1.0f))});
+    writeSkyScene(dir, R"(,"environment":{"file":"square.exr"})");
+    CHECK_THROWS_WITH_AS(loadScene(dir / "s.obj"),
+                         doctest::Contains("square.exr: an environment map must be a latitude-longitude image"),
+                         Error);
 }

@@ -162,6 +162,71 @@ TEST_CASE("a scene file of a registered extension, in any case, opens in place o
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
 
+// A grey quad that emits nothing: lit only by its environment.
+std::filesystem::path writeUnlitQuad(const std::filesystem::path& dir) {
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl grey\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    return dir / "grey.obj";
+}
+
+TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old one and says why") {
+    const auto dir = test::scratchDir("viewer-environment-map");
+    Harness h(smallSingleView(), writeUnlitQuad(dir));
+    REQUIRE(h.viewer.workerConfig().scene->scene.lights().litByDefault());
+    CHECK(describeEnvironment(h.viewer.workerConfig().scene->scene) == "default white sky: the scene has no light");
+    writeImage(dir / "sky.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.5f))});
+    h.viewer.openScene(dir / "sky.exr");
+    h.frame();
+    const auto relit = h.viewer.workerConfig().scene;
+    CHECK(!relit->scene.lights().litByDefault());
+    CHECK(relit->scene.lights().maxRadianceAtInfinity() == 0.5f);
+    CHECK(relit->scenePath() == dir / "grey.obj");
+    CHECK(h.viewer.panel().message() == "environment " + (dir / "sky.exr").string());
+    CHECK(h.viewer.settings().environment.kind == Environment::Kind::Map);
+    CHECK(describeEnvironment(relit->scene) == "map 4x2 turned 0 degrees");
+
+    writeImage(dir / "square.exr", Image{2, 2, std::vector<glm::vec3>(4, glm::vec3(1.0f))});
+    h.viewer.openScene(dir / "square.exr");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene == relit);
+    CHECK(h.viewer.panel().message().rfind("cannot use environment map: " + (dir / "square.exr").string() +
+                                           ": an environment map must be a latitude-longitude image", 0) == 0);
+    CHECK(h.viewer.panel().message().find('\n') == std::string::npos);
+    // The chosen environment lights the scenes opened after it.
+    h.viewer.openScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    h.frame();
+    CHECK(h.viewer.workerConfig().scene->scene.lights().maxRadianceAtInfinity() == 0.5f);
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("the command line's environment lights every scene the viewer opens") {
+    const auto dir = test::scratchDir("viewer-environment-options");
+    ViewerSettings settings = smallSingleView();
+    settings.environment.kind = Environment::Kind::None;
+    Harness h(settings);
+    h.viewer.openScene(writeUnlitQuad(dir));
+    h.frame();
+    const auto opened = h.viewer.workerConfig().scene;
+    CHECK(opened->scenePath() == dir / "grey.obj");
+    CHECK(opened->scene.lights().size() == 0);
+    CHECK(!opened->scene.lights().litByDefault());
+    CHECK(describeEnvironment(opened->scene) == "none");
+}
+
+TEST_CASE("the panel shows the open scene's load summary and its warnings") {
+    Harness h(smallSingleView());
+    CHECK(h.viewer.panel().sceneSummary() == describeScene(*h.viewer.workerConfig().scene));
+    CHECK(h.viewer.panel().sceneWarnings().empty());
+    const auto dir = test::scratchDir("viewer-scene-report");
+    std::ofstream(dir / "s.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n";
+    h.viewer.openScene(dir / "s.obj");
+    h.frame();
+    CHECK(h.viewer.panel().sceneSummary().find("s.obj: 1 triangles") != std::string::npos);
+    CHECK(h.viewer.panel().sceneSummary().find(", 1 warning") != std::string::npos);
+    CHECK(h.viewer.panel().sceneWarnings() ==
+          "warning: " + (dir / "s.obj").string() + ":4: material 'red' is not defined; using grey Kd 0.8\n");
+}
+
 TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sliders") {
     // The furnace (albedo 0.5, Le 1): the bound Le a^(K+1) / (1 - a) = 0.5^K is at most 1e-3
     // first at K = 10.
