@@ -50,12 +50,13 @@ SceneLights::SceneLights(const MeshData& mesh)
         triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
     }
     for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
+    // Lights at infinity weigh their power by the area of the scene they can reach.
+    const float sceneRadius = boundingSphereRadius(mesh.positions);
     for (const DirectionalLight& light : mesh.directionalLights) {
-        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance,
-                                               boundingSphereRadius(mesh.positions)));
+        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius));
     }
     const Environment environment = resolveEnvironment(mesh.environment, !lights_.empty());
-    if (auto light = makeEnvironmentLight(environment, boundingSphereRadius(mesh.positions))) {
+    if (auto light = makeEnvironmentLight(environment, sceneRadius)) {
         atInfinity_.push_back(add(std::move(light)));
         maxRadianceAtInfinity_ = maxRadiance(environment);
         litByDefault_ = mesh.environment.kind == Environment::Kind::Default;
