@@ -67,7 +67,7 @@ TEST_CASE("spherical triangle: solid angles of the octant, a far triangle and a 
     // A cos(theta) / d^2 to relative order (size / d)^2 = 1e-12.
     const double d = 1e5, theta = 0.6;
     const glm::dvec3 centre(0, 0, d), u(1, 0, 0), v(0, std::cos(theta), std::sin(theta));
-    // Vertices about the centroid: (2u - v - ... ) chosen so that the centroid is `centre`.
+    // A right triangle of area 1/2 spanned by u and v, its centroid at `centre`.
     const glm::dvec3 q0 = centre - u / 3.0 - v / 3.0, q1 = q0 + u, q2 = q0 + v;
     CHECK(sphericalTriangleSolidAngle({0, 0, 0}, q0, q1, q2) ==
           doctest::Approx(0.5 * std::cos(theta) / (d * d)).epsilon(1e-9));
