@@ -1,5 +1,6 @@
 #include "lights/area_light.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -8,17 +9,50 @@
 namespace strata {
 
 AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
-                     const glm::vec3& radiance)
-    : p0_(p0), edge1_(p1 - p0), edge2_(p2 - p0), radiance_(radiance) {
-    const glm::vec3 cross = glm::cross(edge1_, edge2_);
+                     const glm::vec3& radiance, double minSphericalSolidAngle)
+    : p0_(p0), p1_(p1), p2_(p2), radiance_(radiance), minSphericalSolidAngle_(minSphericalSolidAngle) {
+    const glm::vec3 cross = glm::cross(p1 - p0, p2 - p0);
     normal_ = glm::normalize(cross);
     area_ = static_cast<float>(0.5 * glm::length(glm::dvec3(cross)));
+    centroid_ = (glm::dvec3(p0) + glm::dvec3(p1) + glm::dvec3(p2)) / 3.0;
+    radius_ = std::max({glm::distance(centroid_, glm::dvec3(p0)), glm::distance(centroid_, glm::dvec3(p1)),
+                        glm::distance(centroid_, glm::dvec3(p2))});
+}
+
+std::optional<SphericalTriangle> AreaLight::spherical(const glm::vec3& point) const {
+    // Only a point in front sees the emitting side; behind, area sampling finds nothing either.
+    const glm::dvec3 x(point);
+    const double height = glm::dot(glm::dvec3(normal_), x - glm::dvec3(p0_));
+    if (!(height > 0.0)) return std::nullopt;
+    // Omega = integral of cos / r^2 over the triangle <= A / r_min^2, and r_min is at least the
+    // height and the distance to the triangle's bounding sphere: a far point is told apart
+    // without the exact solid angle (this bound is part of the choice, so it stays consistent).
+    const double reach = std::max(height, glm::distance(x, centroid_) - radius_);
+    if (area_ < minSphericalSolidAngle_ * reach * reach) return std::nullopt;
+    return SphericalTriangle::make(point, p0_, p1_, p2_, minSphericalSolidAngle_);
+}
+
+double AreaLight::sphericalSolidAngle(const glm::vec3& point) const {
+    const auto triangle = spherical(point);
+    return triangle ? triangle->solidAngle() : 0.0;
 }
 
 std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u) const {
+    const auto triangle = spherical(point);
+    if (!triangle) return sampleArea(point, u);
+    const glm::dvec3 direction = triangle->sample(u);
+    // Where the direction meets the triangle's plane.
+    const double cosLight = -glm::dot(glm::dvec3(normal_), direction);
+    if (!(cosLight > 0.0)) return std::nullopt;
+    const double distance = glm::dot(glm::dvec3(normal_), glm::dvec3(point) - glm::dvec3(p0_)) / cosLight;
+    return LightSample{glm::vec3(direction), static_cast<float>(distance), radiance_,
+                       static_cast<float>(1.0 / triangle->solidAngle()), true};
+}
+
+std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
     // Uniform by area: barycentrics (1 - sqrt(u), sqrt(u)(1 - v), sqrt(u) v).
     const float s = std::sqrt(u.x);
-    const glm::vec3 onLight = p0_ + (s * (1.0f - u.y)) * edge1_ + (s * u.y) * edge2_;
+    const glm::vec3 onLight = p0_ + (s * (1.0f - u.y)) * (p1_ - p0_) + (s * u.y) * (p2_ - p0_);
     const glm::vec3 toLight = onLight - point;
     const float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) return std::nullopt;
@@ -29,9 +63,10 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     return LightSample{direction, distance, radiance_, distanceSquared / (area_ * cosLight), true};
 }
 
-float AreaLight::pdf(const glm::vec3& /*point*/, const glm::vec3& direction, const LightHit& hit) const {
+float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const {
     const float cosLight = -glm::dot(hit.normal, direction);
     if (!(cosLight > 0.0f)) return 0.0f;
+    if (const auto triangle = spherical(point)) return static_cast<float>(1.0 / triangle->solidAngle());
     return hit.distance * hit.distance / (area_ * cosLight);
 }
 

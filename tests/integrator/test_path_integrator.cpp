@@ -8,6 +8,7 @@
 #include "scene/camera.h"
 #include "integrator/path_integrator.h"
 #include "integrator/progressive_renderer.h"
+#include "lights/area_light.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -20,25 +21,29 @@ namespace {
 double furnaceValue(int depth) { return (1.0 - std::pow(0.5, depth + 1)) / 0.5; }
 
 // Lambert (notes 5.2): irradiance at the origin (normal +z) from the unit square [-1/2,1/2]^2 at
-// height 1, emitting radiance 1 downwards: E/L = 0.752274688454.
+// height 1, emitting radiance 1 downwards: E/L = 0.752274688454; from the 2 x 2 square
+// [-1,1]^2 at height 1 (2 pi / 3 sr): E/L = 1.740839502734.
 constexpr double kLambertSquareIrradiance = 0.752274688454;
+constexpr double kLambertLargeSquareIrradiance = 1.740839502734;
 constexpr float kReceiverAlbedo = 0.8f;
 
-Scene lambertScene() {
+Scene lambertScene(float halfSide = 0.5f) {
     MeshData mesh;
     mesh.materials = {Material{"receiver", glm::vec3(kReceiverAlbedo), glm::vec3(0.0f)},
                       Material{"emitter", glm::vec3(0.0f), glm::vec3(1.0f)}};
     // Receiver: large, facing up. Emitter: counter-clockwise seen from below, so it faces down.
     test::addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);
-    test::addQuad(mesh, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1}, 1);
+    const float h = halfSide;
+    test::addQuad(mesh, {-h, -h, 1}, {-h, h, 1}, {h, h, 1}, {h, -h, 1}, 1);
     return Scene(std::move(mesh));
 }
 
 // Pass means (each the average of 24 paths) of the radiance leaving the receiver's origin
 // upwards: i.i.d. across passes and pixel keys, so their spread gives an honest standard error
 // for either sampler.
-std::vector<double> lambertPassMeans(SamplerKind sampler, int passes, bool nee = false) {
-    const Scene scene = lambertScene();
+std::vector<double> lambertPassMeans(SamplerKind sampler, int passes, bool nee = false,
+                                     float halfSide = 0.5f) {
+    const Scene scene = lambertScene(halfSide);
     const PathIntegrator integrator(scene, {1, sampler, nee});
     const Ray ray{{0.0f, 0.0f, 0.5f}, {0.0f, 0.0f, -1.0f}};
     std::vector<double> means;
@@ -100,6 +105,31 @@ TEST_CASE("integrator: Lambert's polygon irradiance for both samplers, strata24 
             << " (the paper claims 1/24 = 0.0417)");
     // With 20000 passes each variance is known to about 1%: a ratio below 0.9 is significant.
     CHECK(ratio < 0.9);
+}
+
+TEST_CASE("integrator: a large close emitter sampled by solid angle gives Lambert's irradiance, with MIS") {
+    // The 2 x 2 square at height 1: each of its triangles subtends pi / 3 sr from the origin, so
+    // next-event estimation samples them by solid angle there (area_light.h). With NEE (light
+    // samples and BSDF samples combined by MIS) and without it (BSDF samples alone), both equal
+    // rho E / pi.
+    const Scene scene = lambertScene(1.0f);
+    for (uint32_t i = 0; i < scene.lights().size(); ++i) {
+        const auto* light = dynamic_cast<const AreaLight*>(&scene.lights().light(i));
+        REQUIRE(light);
+        CHECK(light->sphericalSolidAngle({0, 0, 0}) == doctest::Approx(M_PI / 3).epsilon(1e-6));
+    }
+    const double exact = kReceiverAlbedo * kLambertLargeSquareIrradiance / M_PI;
+    constexpr int kPasses = 4000;
+    for (SamplerKind sampler : {SamplerKind::Bsdf, SamplerKind::Strata24}) {
+        const auto withNee = test::estimateMean(lambertPassMeans(sampler, kPasses, true, 1.0f));
+        const auto withoutNee = test::estimateMean(lambertPassMeans(sampler, kPasses, false, 1.0f));
+        INFO(samplerName(sampler) << ": exact " << exact << ", NEE " << withNee.mean << " +- "
+                                  << withNee.standardError << ", no NEE " << withoutNee.mean << " +- "
+                                  << withoutNee.standardError);
+        CHECK(std::abs(withNee.mean - exact) < 4.0 * withNee.standardError);
+        CHECK(std::abs(withoutNee.mean - exact) < 4.0 * withoutNee.standardError);
+        CHECK(withNee.standardError < 2e-3 * exact);  // the test has power
+    }
 }
 
 TEST_CASE("integrator: depth caps the bounces, and emission is one-sided") {

@@ -1,20 +1,41 @@
-// An emitting triangle as a light (area_light.h): uniform by area, one-sided, its solid-angle
-// density consistent between sample() and pdf(), and the power pi Le A.
+// An emitting triangle as a light (area_light.h): uniform by area or by solid angle, one-sided,
+// its solid-angle density consistent between sample() and pdf() in both regimes and where they
+// switch, the irradiance it gives equal to Lambert's formula, and the power pi Le A.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <glm/geometric.hpp>
 
 #include "lights/area_light.h"
 #include "sampling/random.h"
+#include "sampling/spherical_triangle.h"
+#include "test_support.h"
 #include "util/constants.h"
 
 using namespace strata;
 
 namespace {
+constexpr double kAreaOnly = std::numeric_limits<double>::infinity();
+constexpr double kSolidAngleOnly = 0.0;
+
 // A right triangle of area 2 in the plane z = 1, counter-clockwise seen from below: it faces -z.
-AreaLight downwardLight() {
-    return AreaLight({0, 0, 1}, {0, 2, 1}, {2, 0, 1}, glm::vec3(1.0f, 2.0f, 3.0f));
+AreaLight downwardLight(double minSphericalSolidAngle = AreaLight::kMinSphericalSolidAngle) {
+    return AreaLight({0, 0, 1}, {0, 2, 1}, {2, 0, 1}, glm::vec3(1.0f, 2.0f, 3.0f), minSphericalSolidAngle);
+}
+
+// Lambert's irradiance at `x` (normal +z) from a polygon of radiance 1 above it (notes 5.2):
+// E = 1/2 sum_i Theta_i (n . Gamma_i), vertices counter-clockwise seen from above the emitter.
+double lambertIrradiance(const glm::dvec3& x, const std::vector<glm::dvec3>& polygon) {
+    double sum = 0.0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec3 v0 = glm::normalize(polygon[i] - x);
+        const glm::dvec3 v1 = glm::normalize(polygon[(i + 1) % polygon.size()] - x);
+        sum += std::acos(glm::dot(v0, v1)) * glm::normalize(glm::cross(v0, v1)).z;
+    }
+    return 0.5 * sum;
 }
 glm::vec2 randomPoint(uint64_t k) {
     const uint64_t bits = mixBits(k);
@@ -23,7 +44,7 @@ glm::vec2 randomPoint(uint64_t k) {
 }  // namespace
 
 TEST_CASE("area light: points uniform by area, density d^2 / (A cos) and the same from pdf()") {
-    const AreaLight light = downwardLight();
+    const AreaLight light = downwardLight(kAreaOnly);
     CHECK(light.area() == doctest::Approx(2.0f));
     const glm::vec3 receiver(0.3f, 0.4f, 0.0f);
     constexpr int kSamples = 40000;
@@ -70,4 +91,86 @@ TEST_CASE("area light: emits from its front only, and its power is pi Le A") {
     CHECK_FALSE(light.sample({0.5f, 0.5f, 2.0f}, {0.5f, 0.5f}));  // above it sees its back
     CHECK(light.power().x == doctest::Approx(kPi * 2.0f));
     CHECK_FALSE(light.isDelta());
+}
+
+TEST_CASE("area light: by solid angle, density 1 / Omega from sample() and pdf(), points on the light") {
+    const AreaLight light = downwardLight(kSolidAngleOnly);
+    const glm::vec3 receiver(0.3f, 0.4f, 0.0f);
+    const double solidAngle = sphericalTriangleSolidAngle(receiver, {0, 0, 1}, {0, 2, 1}, {2, 0, 1});
+    CHECK(light.sphericalSolidAngle(receiver) == solidAngle);
+    for (uint64_t k = 0; k < 4000; ++k) {
+        const auto s = light.sample(receiver, randomPoint(k));
+        REQUIRE(s);
+        const glm::vec3 point = receiver + s->distance * s->direction;
+        CHECK(point.z == doctest::Approx(1.0f).epsilon(1e-6));
+        CHECK(point.x >= -1e-5f);
+        CHECK(point.y >= -1e-5f);
+        CHECK(point.x + point.y <= 2.0f + 1e-5f);
+        CHECK(s->onSurface);
+        CHECK(s->radiance.y == 2.0f);
+        CHECK(s->pdf == static_cast<float>(1.0 / solidAngle));
+        const LightHit hit{glm::vec3(0.0f, 0.0f, -1.0f), s->distance};
+        CHECK(light.pdf(receiver, s->direction, hit) == s->pdf);
+    }
+    // From behind, nothing: no sample, density 0, and a ray hitting its back has density 0.
+    const glm::vec3 behind(0.3f, 0.4f, 2.0f);
+    CHECK(light.sphericalSolidAngle(behind) == 0.0);
+    CHECK_FALSE(light.sample(behind, {0.3f, 0.6f}));
+    CHECK(light.pdf(behind, {0, 0, -1}, LightHit{glm::vec3(0, 0, -1), 1.0f}) == 0.0f);
+    CHECK(light.pdf(receiver, {0, 0, -1}, LightHit{glm::vec3(0, 0, -1), 1.0f}) == 0.0f);
+}
+
+TEST_CASE("area light: the regime depends on the point only, and sample() and pdf() agree across it") {
+    // Walking away from the light, the solid angle falls through the threshold: on each side the
+    // sample's density is the one pdf() gives for its direction.
+    constexpr double kThreshold = 0.05;
+    const AreaLight light = downwardLight(kThreshold);
+    int spherical = 0, byArea = 0;
+    for (int step = 0; step < 40; ++step) {
+        const glm::vec3 receiver(0.6f, 0.6f, 1.0f - 0.25f * static_cast<float>(step + 1));
+        const double solidAngle = sphericalTriangleSolidAngle(receiver, {0, 0, 1}, {0, 2, 1}, {2, 0, 1});
+        const bool bySolidAngle = solidAngle >= kThreshold;
+        CHECK(light.sphericalSolidAngle(receiver) == (bySolidAngle ? solidAngle : 0.0));
+        (bySolidAngle ? spherical : byArea) += 1;
+        for (uint64_t k = 0; k < 200; ++k) {
+            const auto s = light.sample(receiver, randomPoint(k + 1000 * step));
+            REQUIRE(s);
+            const LightHit hit{glm::vec3(0.0f, 0.0f, -1.0f), s->distance};
+            CHECK(light.pdf(receiver, s->direction, hit) == doctest::Approx(s->pdf).epsilon(1e-5));
+            if (bySolidAngle) CHECK(s->pdf == static_cast<float>(1.0 / solidAngle));
+        }
+    }
+    CHECK(spherical > 3);
+    CHECK(byArea > 3);
+}
+
+TEST_CASE("area light: irradiance of a large close triangle is Lambert's, by area and by solid angle") {
+    // A triangle 0.3 above the receiver, subtending about 3.6 sr. Estimates of E = int Le cos dw
+    // by the light's own samples; the exact value by Lambert's formula (checked first against the
+    // notes' tabulated 2 x 2 square at height 1).
+    CHECK(lambertIrradiance({0, 0, 0}, {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}) ==
+          doctest::Approx(1.740839502734).epsilon(1e-12));
+    const glm::dvec3 p0(-1, -1, 0.3), p1(1.5, -1, 0.3), p2(-1, 1.5, 0.3);
+    const double exact = lambertIrradiance({0, 0, 0}, {p0, p1, p2});
+    // Counter-clockwise seen from below: faces the receiver.
+    const glm::vec3 radiance(1.0f);
+    double variance[2];
+    for (int useSolidAngle = 0; useSolidAngle < 2; ++useSolidAngle) {
+        const AreaLight light(p0, p2, p1, radiance, useSolidAngle ? kSolidAngleOnly : kAreaOnly);
+        CHECK((light.sphericalSolidAngle({0, 0, 0}) > 3.0) == (useSolidAngle == 1));
+        std::vector<double> values;
+        for (uint64_t k = 0; k < 200000; ++k) {
+            const auto s = light.sample({0, 0, 0}, randomPoint(k + 77));
+            values.push_back(s ? s->radiance.x * std::max(0.0f, s->direction.z) / s->pdf : 0.0);
+        }
+        const auto estimate = test::estimateMean(values);
+        INFO((useSolidAngle ? "solid angle" : "area") << ": " << estimate.mean << " +- "
+                                                       << estimate.standardError << ", exact " << exact);
+        CHECK(std::abs(estimate.mean - exact) < 4.0 * estimate.standardError);
+        variance[useSolidAngle] = estimate.standardError * estimate.standardError * values.size();
+    }
+    MESSAGE("irradiance per sample: variance by area " << variance[0] << ", by solid angle " << variance[1]);
+    // Area sampling's 1/d^2 and cos_light weigh the rim's grazing directions; solid angle sampling
+    // leaves only the receiver's cosine to vary.
+    CHECK(variance[1] < 0.5 * variance[0]);
 }
