@@ -204,7 +204,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         for (int spp : cyclesSpp) strata.push_back(strataRun(k, spp, spp, "same spp"));
     }
     if (const auto failed = raceWithCycles(strata, "vs-cycles, same spp")) return failure(*failed);
-    std::vector<StrataRun> equalTime;
+    std::vector<StrataRun> equalTime, reused;
     for (size_t k = 0; k < configs.size(); ++k) {
         std::vector<const StrataRun*> measuredRuns;
         for (const StrataRun& s : strata) {
@@ -214,12 +214,16 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         const TimedSpp b{measuredRuns.back()->spp, measuredRuns.back()->entrant.medianWall()};
         for (const CyclesRun& c : cycles) {
             const int spp = equalTimeSpp(a, b, median(*c.renderSeconds), kPathsPerPass);
-            if (spp == c.spp) {
-                for (StrataRun& s : strata) {
-                    if (s.config == k && s.spp == spp) s.match = "same spp, equal time";
-                }
-            } else {
+            const auto same = std::find_if(strata.begin(), strata.end(),
+                                           [&](const StrataRun& s) { return s.config == k && s.spp == spp; });
+            if (same == strata.end()) {
                 equalTime.push_back(strataRun(k, c.spp, spp, "equal time"));
+            } else if (same->cyclesSpp == c.spp) {
+                same->match = "same spp, equal time";
+            } else {  // the same-spp run of another Cycles budget: its image and times again
+                reused.push_back(*same);
+                reused.back().cyclesSpp = c.spp;
+                reused.back().match = "equal time";
             }
         }
     }
@@ -227,6 +231,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         if (const auto failed = raceWithCycles(equalTime, "vs-cycles, equal time")) return failure(*failed);
     }
     strata.insert(strata.end(), equalTime.begin(), equalTime.end());
+    strata.insert(strata.end(), reused.begin(), reused.end());
 
     const auto measured = [&](const fs::path& image) {
         const Image rendered = readExr(image);
