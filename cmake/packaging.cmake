@@ -23,5 +23,5 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Programs `strata bench` runs when present: mpiexec for its rank comparison, gnuplot for its
 # plots, Embree's tutorial path tracer for --vs-embree.
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "openmpi-bin, gnuplot-nox, embree-tools")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "openmpi-bin, gnuplot-nox, embree-tools, blender")
 include(CPack)

@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # Installs what Strata needs from Debian 12's packages (when missing) and builds it (Release).
-# Usage: bash scripts/setup.sh [BUILD_DIR]   (default: build)
+# Usage: bash scripts/setup.sh [--peers] [BUILD_DIR]   (default: build)
+#   --peers: also the renderers `strata bench --vs-embree` and `--vs-cycles` race against
+#            (embree-tools' pathtracer, blender); nothing else needs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+peers=0
+if [ "${1:-}" = "--peers" ]; then peers=1; shift; fi
 build_dir=${1:-build}
 
 packages=(
@@ -11,9 +15,10 @@ packages=(
   libopenexr-dev libstb-dev doctest-dev
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
-  python3-glad xvfb xauth gnuplot-nox embree-tools clang libclang-rt-14-dev
+  python3-glad xvfb xauth gnuplot-nox clang libclang-rt-14-dev
   dpkg-dev  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB)
 )
+if ((peers)); then packages+=(embree-tools blender); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

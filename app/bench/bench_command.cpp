@@ -9,6 +9,7 @@
 #include <tbb/info.h>
 
 #include "bench/bench_convergence.h"
+#include "bench/bench_cycles.h"
 #include "bench/bench_output.h"
 #include "bench/bench_peer.h"
 #include "bench/bench_ranks.h"
@@ -37,6 +38,7 @@ struct BenchCommand {
     std::string reference;
     int referenceSpp = 0;
     bool vsEmbree = false;
+    bool vsCycles = false;
     bool skipThroughput = false;
     bool skipRealScenes = false;
     uint64_t seed = 0;
@@ -178,6 +180,15 @@ void BenchCommand::run() const {
         peer.outDir = out;
         summary += runPeerComparison(peer);
     }
+    if (vsCycles) {
+        CyclesBenchSettings peer;
+        peer.scene = cornellBox(quick);
+        peer.repeats = quick ? 1 : 3;
+        peer.threads = threads;
+        peer.seed = seed;
+        peer.outDir = out;
+        summary += runCyclesComparison(peer);
+    }
     if (!skipThroughput) {
         ViewerBenchSettings viewer;
         viewer.scene = scenes.empty() ? bundledScene("cornell") : fs::path(scenes.front());
@@ -242,6 +253,8 @@ void addBenchCommand(CLI::App& app) {
     sub->add_option("--reference-spp", command->referenceSpp, "Reference spp (default 16x --max-spp)");
     sub->add_flag("--vs-embree", command->vsEmbree,
                   "Also race Embree's tutorial pathtracer on ../shared/scenes/cornell_point");
+    sub->add_flag("--vs-cycles", command->vsCycles,
+                  "Also set Strata against Blender's Cycles on the Cornell box (needs blender)");
     sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
     sub->add_flag("--skip-real-scenes", command->skipRealScenes,
                   "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");

@@ -25,12 +25,6 @@ constexpr double kBenchNoiseThreshold = 0.05;
 // theirs.
 constexpr uint64_t kReferenceSeedOffset = 0x5eed5eed5eed5eedull;
 
-struct Reference {
-    std::optional<glm::vec3> constant;
-    Image image;
-    std::string kind;
-};
-
 // Runs `session` to `budget`, each pass it completes reported to `progress`.
 void renderWithProgress(RenderSession& session, const RenderBudget& budget, ProgressReporter& progress) {
     session.run(budget, [&](const PassReport& report) {
@@ -49,36 +43,6 @@ Image renderReference(const LoadedScene& loaded, const Camera& camera, RenderOpt
     renderWithProgress(session, {}, progress);
     progress.finish(session.completedPasses(), session.counters().paths);
     return Image::fromMeans(session.buffer());
-}
-
-std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
-                                       const RenderOptions& options, const ConvergenceSettings& settings) {
-    const PathIntegratorSettings integrator = options.renderSettings(loaded.scene).integrator;
-    if (auto exact = furnaceRadiance(loaded.scene, camera.pose(), integrator)) {
-        return Reference{exact, {}, "analytic"};
-    }
-    if (settings.referenceFile) {
-        Image image = readExr(*settings.referenceFile);
-        if (image.width != camera.width() || image.height != camera.height()) {
-            throw Error("--reference " + settings.referenceFile->string() + ": " +
-                        std::to_string(image.width) + "x" + std::to_string(image.height) +
-                        ", but the bench renders " + std::to_string(camera.width()) + "x" +
-                        std::to_string(camera.height()) + " (use --width)");
-        }
-        return Reference{std::nullopt, std::move(image), "file"};
-    }
-    const auto path = referencePath(settings.outDir / "references", loaded, camera, integrator);
-    if (std::filesystem::is_regular_file(path)) return Reference{std::nullopt, readExr(path), "cache"};
-    if (!settings.makeReference) {
-        std::fprintf(stderr, "note: no reference %s for %s; run with --make-reference (skipped)\n",
-                     path.string().c_str(), loaded.scenePath().string().c_str());
-        return std::nullopt;
-    }
-    std::filesystem::create_directories(path.parent_path());
-    Image image = renderReference(loaded, camera, options, settings);
-    writeImage(path, image);
-    std::fprintf(stderr, "wrote reference %s\n", path.string().c_str());
-    return Reference{std::nullopt, std::move(image), "made"};
 }
 
 ImageError measure(const Image& image, const Reference& reference) {
@@ -182,6 +146,36 @@ std::string slopeVerdict(const PowerLawFit& fit) {
 }
 
 }  // namespace
+
+std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
+                                       const RenderOptions& options, const ConvergenceSettings& settings) {
+    const PathIntegratorSettings integrator = options.renderSettings(loaded.scene).integrator;
+    if (auto exact = furnaceRadiance(loaded.scene, camera.pose(), integrator)) {
+        return Reference{exact, {}, "analytic"};
+    }
+    if (settings.referenceFile) {
+        Image image = readExr(*settings.referenceFile);
+        if (image.width != camera.width() || image.height != camera.height()) {
+            throw Error("--reference " + settings.referenceFile->string() + ": " +
+                        std::to_string(image.width) + "x" + std::to_string(image.height) +
+                        ", but the bench renders " + std::to_string(camera.width()) + "x" +
+                        std::to_string(camera.height()) + " (use --width)");
+        }
+        return Reference{std::nullopt, std::move(image), "file"};
+    }
+    const auto path = referencePath(settings.outDir / "references", loaded, camera, integrator);
+    if (std::filesystem::is_regular_file(path)) return Reference{std::nullopt, readExr(path), "cache"};
+    if (!settings.makeReference) {
+        std::fprintf(stderr, "note: no reference %s for %s; run with --make-reference (skipped)\n",
+                     path.string().c_str(), loaded.scenePath().string().c_str());
+        return std::nullopt;
+    }
+    std::filesystem::create_directories(path.parent_path());
+    Image image = renderReference(loaded, camera, options, settings);
+    writeImage(path, image);
+    std::fprintf(stderr, "wrote reference %s\n", path.string().c_str());
+    return Reference{std::nullopt, std::move(image), "made"};
+}
 
 std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) {
     std::vector<ConvergenceRun> runs;

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "bench/bench_output.h"
+#include "io/image_io.h"
+#include "render_options.h"
 
 namespace strata {
 
@@ -56,6 +58,21 @@ struct ConvergenceRun {
     std::string reference;  // "analytic", "cache", "file" or "made"
     std::vector<Checkpoint> checkpoints;
 };
+
+// What a run's error is measured against: the exact radiance of an analytic scene, or an image.
+struct Reference {
+    std::optional<glm::vec3> constant;
+    Image image;
+    std::string kind;  // "analytic", "file", "cache" or "made"
+};
+
+// The reference for `loaded` seen by `camera` at `options`' depth and next-event flag: analytic
+// for a furnace (reference_cache.h), else settings.referenceFile, else the cached render in
+// OUT/references, else (settings.makeReference) a strata24 render of settings.referencePasses
+// passes stored there; nullopt, with a note, when there is none. Throws strata::Error for a
+// --reference file of the wrong size.
+std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
+                                       const RenderOptions& options, const ConvergenceSettings& settings);
 
 // Runs every (scene, depth, sampler), writing convergence-SCENE-SAMPLER-dK.csv per run and one
 // error-against-time plot per (scene, depth). Scenes without a reference are skipped with a note.

@@ -1,6 +1,9 @@
 #include "bench/bench_process.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <string_view>
+#include <unistd.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -33,6 +36,19 @@ ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::pat
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
     return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime), usage.ru_maxrss};
+}
+
+bool onPath(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    std::string_view folders = path ? path : "";
+    while (true) {
+        const size_t colon = folders.find(':');
+        const std::string_view folder = folders.substr(0, colon);
+        const auto candidate = std::filesystem::path(folder.empty() ? "." : folder) / program;
+        if (access(candidate.c_str(), X_OK) == 0 && std::filesystem::is_regular_file(candidate)) return true;
+        if (colon == std::string_view::npos) return false;
+        folders.remove_prefix(colon + 1);
+    }
 }
 
 }  // namespace strata

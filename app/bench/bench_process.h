@@ -20,4 +20,7 @@ struct ProcessTiming {
 ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log,
                        const std::filesystem::path& directory = {});
 
+// Whether `program` (a name without a slash) is an executable file in a folder of PATH.
+bool onPath(const std::string& program);
+
 }  // namespace strata

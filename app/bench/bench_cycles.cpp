@@ -1,0 +1,285 @@
+#include "bench/bench_cycles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <tbb/info.h>
+
+#include "bench/bench_convergence.h"
+#include "bench/bench_output.h"
+#include "bench/bench_process.h"
+#include "bench/bench_race.h"
+#include "bench/cycles_comparison.h"
+#include "bench/cycles_script.h"
+#include "bench/reference_cache.h"
+#include "bench/strata_child.h"
+#include "film/image_metrics.h"
+#include "integrator/progressive_renderer.h"
+#include "io/image_io.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The reference has 16x the samples of the largest Cycles render, as the bench's other
+// references have of its largest checkpoint.
+constexpr int kReferenceSppFactor = 16;
+
+// Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds diffuse
+// materials with one-sided emission, flat triangles and a black world, and nothing else.
+std::string unsupported(const MeshData& mesh) {
+    if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return "it has point or directional lights";
+    if (!mesh.normals.empty()) return "it has shading normals";
+    bool emits = false;
+    for (const Material& m : mesh.materials) {
+        if (m.specular != glm::vec3(0.0f)) return "material " + m.name + " has a specular layer (Ks)";
+        emits = emits || m.emission != glm::vec3(0.0f);
+    }
+    const auto env = mesh.environment.kind;
+    if (!(env == Environment::Kind::None || (env == Environment::Kind::Default && emits))) {
+        return "it is lit by an environment";
+    }
+    return "";
+}
+
+int nearestPassMultiple(int spp) {
+    return kPathsPerPass * std::max(1, static_cast<int>(std::lround(double(spp) / kPathsPerPass)));
+}
+
+glm::dvec3 channelMeans(const Image& image) {
+    glm::dvec3 sum(0.0);
+    for (const auto& p : image.pixels) sum += glm::dvec3(p.x, p.y, p.z);
+    return sum / double(image.pixels.size());
+}
+
+// What Strata's defaults are in this build, for the table (another build may have others).
+std::string defaultsLabel() {
+    const RenderOptions defaults;
+    std::string label = "Strata defaults (" + defaults.sampler;
+    if (defaults.nee) label += ", NEE";
+    if (defaults.rouletteDepth >= 0) label += ", roulette from " + std::to_string(defaults.rouletteDepth);
+    return label + ")";
+}
+
+// One Strata configuration of the comparison: the options every one of its runs shares.
+struct StrataConfig {
+    std::string label;
+    RenderOptions options;
+};
+
+struct CyclesRun {
+    int spp = 0;
+    fs::path image;
+    std::shared_ptr<std::vector<double>> renderSeconds;  // parsed from each run's log
+    Entrant entrant;
+};
+
+struct StrataRun {
+    size_t config = 0;
+    int cyclesSpp = 0;
+    int spp = 0;
+    std::string match;
+    fs::path image;
+    Entrant entrant;
+};
+
+}  // namespace
+
+std::string runCyclesComparison(const CyclesBenchSettings& settings) {
+    const std::string title = "\n### Against Blender's Cycles (" + settings.scene.string() + ")\n\n";
+    if (!onPath("blender")) {
+        std::fprintf(stderr, "note: --vs-cycles skipped: no blender on PATH (scripts/setup.sh --peers)\n");
+        return title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n";
+    }
+    if (!fs::is_regular_file(settings.scene)) {
+        return title + "Skipped: " + settings.scene.string() + " is missing.\n";
+    }
+    const LoadedScene loaded = loadScene(settings.scene);
+    const MeshData& mesh = loaded.scene.mesh();
+    if (const std::string why = unsupported(mesh); !why.empty()) {
+        return title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n";
+    }
+    const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+    const Camera camera(loaded.settings.pose, settings.width, settings.height);
+    const fs::path& out = settings.outDir;
+    const auto log = out / "vs-cycles.log";
+    std::vector<int> cyclesSpp;
+    for (int spp : settings.cyclesSpp) cyclesSpp.push_back(nearestPassMultiple(spp));
+    const int largestSpp = *std::max_element(cyclesSpp.begin(), cyclesSpp.end());
+
+    // One converged reference for every image: Strata's, with next-event estimation (the key
+    // holds the depth and the NEE flag, not the sampler; every unbiased sampler converges to it).
+    RenderOptions reference;
+    reference.scene = settings.scene.string();
+    reference.depth = settings.depth;
+    reference.nee = true;
+    reference.threads = threads;
+    ConvergenceSettings referenceSettings;
+    referenceSettings.referencePasses = static_cast<uint32_t>(kReferenceSppFactor * largestSpp / kPathsPerPass);
+    referenceSettings.makeReference = true;
+    referenceSettings.seed = settings.seed;
+    referenceSettings.outDir = out;
+    const auto referenceFile = referencePath(out / "references", loaded, camera,
+                                             reference.renderSettings(loaded.scene).integrator);
+    const auto found = findReference(loaded, camera, reference, referenceSettings);
+    if (!found || found->constant) return title + "Skipped: no reference image.\n";
+    const Image& referenceImage = found->image;
+    const glm::dvec3 referenceMeans = channelMeans(referenceImage);
+
+    const auto script = out / "cycles_render.py";
+    writeTextFile(script, std::string(cyclesScript()));
+    std::vector<CyclesRun> cycles;
+    for (int spp : cyclesSpp) {
+        CyclesJob job;
+        job.obj = settings.scene;
+        job.scale = cyclesUnitScale(mesh);
+        job.materials = mesh.materials;
+        job.pose = camera.pose();
+        job.width = settings.width;
+        job.height = settings.height;
+        job.spp = spp;
+        job.maxBounces = cyclesMaxBounces(settings.depth);
+        job.threads = threads;
+        job.seed = settings.seed;
+        job.out = out / ("vs-cycles-cycles-" + std::to_string(spp) + ".exr");
+        const auto parameters = out / ("vs-cycles-cycles-" + std::to_string(spp) + ".json");
+        writeTextFile(parameters, cyclesParameters(job));
+        auto seconds = std::make_shared<std::vector<double>>();
+        const auto readSeconds = [seconds](const fs::path& runLog) {
+            std::ifstream in(runLog);
+            std::stringstream text;
+            text << in.rdbuf();
+            const auto parsed = parseCyclesSeconds(text.str());
+            if (parsed) seconds->push_back(*parsed);
+            return parsed.has_value();
+        };
+        cycles.push_back({spp, job.out, seconds,
+                          {"blender (Cycles, " + std::to_string(spp) + " spp)",
+                           cyclesCommandLine(script, parameters), readSeconds, {}, {}, {}}});
+    }
+
+    std::vector<StrataConfig> configs = {{defaultsLabel(), {}}, {"Strata --sampler bsdf --nee --roulette-depth 2", {}}};
+    configs[1].options.sampler = "bsdf";
+    configs[1].options.nee = true;
+    configs[1].options.rouletteDepth = 2;
+    for (StrataConfig& config : configs) {
+        config.options.scene = settings.scene.string();
+        config.options.width = settings.width;
+        config.options.height = settings.height;
+        config.options.depth = settings.depth;
+        config.options.threads = threads;
+        config.options.seed = settings.seed;
+    }
+    const auto strataRun = [&](size_t config, int cycles, int spp, const std::string& match) {
+        const auto image = out / ("vs-cycles-strata-" + std::to_string(config) + "-" + std::to_string(spp) + ".exr");
+        return StrataRun{config, cycles, spp, match, image,
+                         {configs[config].label + ", " + std::to_string(spp) + " spp",
+                          renderCommandLine(configs[config].options, spp, image), {}, {}, {}, {}}};
+    };
+    // Races the Cycles renders with `strata`, alternated; the Cycles times pool over races.
+    const auto raceWithCycles = [&](std::vector<StrataRun>& runs, const std::string& label) {
+        std::vector<Entrant> entrants;
+        for (const CyclesRun& c : cycles) entrants.push_back(c.entrant);
+        for (const StrataRun& s : runs) entrants.push_back(s.entrant);
+        const auto failed = race(entrants, settings.repeats, log, label);
+        for (size_t i = 0; i < runs.size(); ++i) runs[i].entrant = entrants[cycles.size() + i];
+        return failed;
+    };
+    const auto failure = [&](const std::string& name) {
+        return title + "Skipped: `" + name + "` failed (see " + log.string() + ").\n";
+    };
+
+    // First the same spp as Cycles, which also measures each configuration's start-up and cost
+    // per sample; then the spp that takes as long as Cycles' render.
+    std::vector<StrataRun> strata;
+    for (size_t k = 0; k < configs.size(); ++k) {
+        for (int spp : cyclesSpp) strata.push_back(strataRun(k, spp, spp, "same spp"));
+    }
+    if (const auto failed = raceWithCycles(strata, "vs-cycles, same spp")) return failure(*failed);
+    std::vector<StrataRun> equalTime, reused;
+    for (size_t k = 0; k < configs.size(); ++k) {
+        std::vector<const StrataRun*> measuredRuns;
+        for (const StrataRun& s : strata) {
+            if (s.config == k) measuredRuns.push_back(&s);
+        }
+        const TimedSpp a{measuredRuns.front()->spp, measuredRuns.front()->entrant.medianWall()};
+        const TimedSpp b{measuredRuns.back()->spp, measuredRuns.back()->entrant.medianWall()};
+        for (const CyclesRun& c : cycles) {
+            const int spp = equalTimeSpp(a, b, median(*c.renderSeconds), kPathsPerPass);
+            const auto same = std::find_if(strata.begin(), strata.end(),
+                                           [&](const StrataRun& s) { return s.config == k && s.spp == spp; });
+            if (same == strata.end()) {
+                equalTime.push_back(strataRun(k, c.spp, spp, "equal time"));
+            } else if (same->cyclesSpp == c.spp) {
+                same->match = "same spp, equal time";
+            } else {  // the same-spp run of another Cycles budget: its image and times again
+                reused.push_back(*same);
+                reused.back().cyclesSpp = c.spp;
+                reused.back().match = "equal time";
+            }
+        }
+    }
+    if (!equalTime.empty()) {
+        if (const auto failed = raceWithCycles(equalTime, "vs-cycles, equal time")) return failure(*failed);
+    }
+    strata.insert(strata.end(), equalTime.begin(), equalTime.end());
+    strata.insert(strata.end(), reused.begin(), reused.end());
+
+    const auto measured = [&](const fs::path& image) {
+        const Image rendered = readExr(image);
+        return std::pair{imageError(rendered, referenceImage).relMse, channelMeans(rendered) / referenceMeans};
+    };
+    std::vector<CyclesRow> rows;
+    for (const CyclesRun& c : cycles) {
+        const auto [relMse, means] = measured(c.image);
+        rows.push_back({kCyclesRenderer, "", c.spp, c.spp, relMse, median(*c.renderSeconds), means});
+        for (size_t k = 0; k < configs.size(); ++k) {
+            for (const StrataRun& s : strata) {
+                if (s.config != k || s.cyclesSpp != c.spp) continue;
+                const auto [strataRelMse, strataMeans] = measured(s.image);
+                rows.push_back({configs[k].label, s.match, c.spp, s.spp, strataRelMse, s.entrant.medianWall(),
+                                strataMeans});
+            }
+        }
+    }
+
+    const Table table = cyclesComparisonTable(rows);
+    writeTextFile(out / "vs-cycles.csv", table.csv());
+    std::vector<PlotSeries> series;
+    for (const auto& [renderer, csv] : cyclesPlotData(rows)) {
+        const std::string file = "vs-cycles-series-" + std::to_string(series.size()) + ".csv";
+        writeTextFile(out / file, csv);
+        series.push_back({renderer, file});
+    }
+    const std::string plotTitle = sceneName(settings.scene) + cell(", %dx%d, depth %d, ", settings.width,
+                                                                   settings.height, settings.depth) +
+                                  threadsText(threads);
+    runGnuplot(out, "vs-cycles", cyclesPlotScript(series, "vs-cycles.png", plotTitle));
+    return title +
+           cell("%dx%d, depth %d (Cycles max_bounces %d), %s, medians of %d alternated runs. Seconds: "
+                "`strata render` as a whole process (start-up, loading, BVH build, render, writing); "
+                "Cycles' `bpy.ops.render.render()` alone, timed inside Blender (its start-up, scene "
+                "building and image writing excluded). relMSE against one reference (%s, %d spp, "
+                "%s); the last column is each image's channel means over the reference's.\n\n",
+                settings.width, settings.height, settings.depth, cyclesMaxBounces(settings.depth),
+                threadsText(threads).c_str(), settings.repeats,
+                found->kind == "cache" ? "cached Strata render" : "Strata render made now",
+                kReferenceSppFactor * largestSpp, referenceFile.filename().string().c_str()) +
+           table.markdown() +
+           "\nRatios below 1 favour Strata; relMSE x s is the cost of a given error (Monte Carlo's "
+           "relMSE falls as 1/time), so its ratio is the one to read. Equal-time spp come from the "
+           "line through each configuration's two same-spp times. Cycles' settings: no adaptive "
+           "sampling, denoising, clamping, glossy blur or light threshold, one bounce cap for every "
+           "kind, a 1-pixel box filter, one-sided emission, the scene scaled to unit size "
+           "(script: " + script.string() + "; plot: " + (out / "vs-cycles.png").string() + ").\n";
+}
+
+}  // namespace strata

@@ -1,0 +1,223 @@
+#include "bench/cycles_script.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <glm/common.hpp>
+#include <nlohmann/json.hpp>
+
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+constexpr std::string_view kSecondsLabel = "cycles render seconds: ";
+
+// Every setting below is one that made Cycles' image differ from Strata's, or is a factory
+// default that biases Cycles (clamping, glossy blur, light threshold, denoising, adaptive
+// sampling, a wide pixel filter, bounce caps per kind).
+constexpr std::string_view kScript = R"python(# Renders a Lambertian OBJ scene with Blender's Cycles as Strata renders it (strata bench --vs-cycles).
+# blender -b --factory-startup --python-exit-code 1 --python cycles_render.py -- PARAMETERS.json
+import json
+import math
+import sys
+import time
+
+import bpy
+from mathutils import Matrix, Vector
+
+parameters_file = sys.argv[sys.argv.index("--") + 1]
+with open(parameters_file) as f:
+    params = json.load(f)
+scale = params["scale"]
+
+# --factory-startup still holds a cube, a light and a grey world: start from nothing.
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+
+# The importer turns OBJ (x, y, z) into (x, -z, y) by default; these axes keep them as they are.
+# Cycles 3.4 samples triangle lights by solid angle with an approximate acos that makes small ones
+# too dark in a scene measured in millimetres; radiance does not depend on scale, so the scene is
+# made unit size (the camera below too).
+bpy.ops.wm.obj_import(filepath=params["obj"], forward_axis='Y', up_axis='Z', global_scale=scale)
+
+
+def lambertian(material, kd, ke):
+    """Diffuse Kd, plus radiance Ke from the front (counter-clockwise) side only: Cycles' mesh
+    emission is two-sided, Strata's Ke one-sided."""
+    material.use_nodes = True
+    nodes = material.node_tree.nodes
+    links = material.node_tree.links
+    nodes.clear()
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (*kd, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    geometry = nodes.new("ShaderNodeNewGeometry")
+    front = nodes.new("ShaderNodeMath")
+    front.operation = 'SUBTRACT'
+    front.inputs[0].default_value = 1.0
+    links.new(geometry.outputs["Backfacing"], front.inputs[1])
+    emission = nodes.new("ShaderNodeEmission")
+    emission.inputs["Color"].default_value = (*ke, 1.0)
+    links.new(front.outputs["Value"], emission.inputs["Strength"])
+    add = nodes.new("ShaderNodeAddShader")
+    links.new(diffuse.outputs["BSDF"], add.inputs[0])
+    links.new(emission.outputs["Emission"], add.inputs[1])
+    output = nodes.new("ShaderNodeOutputMaterial")
+    links.new(add.outputs["Shader"], output.inputs["Surface"])
+
+
+materials = params["materials"]
+for material in bpy.data.materials:
+    if material.name not in materials:
+        raise RuntimeError("the OBJ's material '%s' is not in %s" % (material.name, parameters_file))
+    lambertian(material, materials[material.name]["kd"], materials[material.name]["ke"])
+
+world = bpy.data.worlds.new("black")
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+scene.world = world
+
+# Strata's pinhole looks from position at look_at, right = forward x up, fov_y the vertical field
+# of view (renderer/scene/camera.cpp); Blender's camera looks down its -Z with +Y up.
+position = Vector(params["position"]) * scale
+forward = (Vector(params["look_at"]) * scale - position).normalized()
+right = forward.cross(Vector(params["up"])).normalized()
+up = right.cross(forward)
+camera_data = bpy.data.cameras.new("camera")
+camera_data.sensor_fit = 'VERTICAL'
+camera_data.angle_y = math.radians(params["fov_y"])
+camera_data.clip_start = 1e-4
+camera_data.clip_end = 1e4
+camera = bpy.data.objects.new("camera", camera_data)
+scene.collection.objects.link(camera)
+camera.matrix_world = Matrix((
+    (right.x, up.x, -forward.x, position.x),
+    (right.y, up.y, -forward.y, position.y),
+    (right.z, up.z, -forward.z, position.z),
+    (0.0, 0.0, 0.0, 1.0)))
+scene.camera = camera
+
+render = scene.render
+render.engine = 'CYCLES'
+render.resolution_x = params["width"]
+render.resolution_y = params["height"]
+render.resolution_percentage = 100
+render.pixel_aspect_x = 1.0
+render.pixel_aspect_y = 1.0
+render.threads_mode = 'FIXED'
+render.threads = params["threads"]
+render.dither_intensity = 0.0
+render.film_transparent = False
+scene.view_settings.view_transform = 'Standard'
+scene.view_settings.look = 'None'
+scene.view_settings.exposure = 0.0
+scene.view_settings.gamma = 1.0
+render.image_settings.file_format = 'OPEN_EXR'
+render.image_settings.color_mode = 'RGB'
+render.image_settings.color_depth = '32'
+render.image_settings.exr_codec = 'ZIP'
+
+cycles = scene.cycles
+cycles.device = 'CPU'
+cycles.samples = params["spp"]
+cycles.seed = params["seed"]
+cycles.use_adaptive_sampling = False
+cycles.use_denoising = False
+cycles.sample_clamp_direct = 0.0
+cycles.sample_clamp_indirect = 0.0
+cycles.blur_glossy = 0.0
+cycles.light_sampling_threshold = 0.0
+cycles.caustics_reflective = True
+cycles.caustics_refractive = True
+# One cap for every kind of bounce (the factory caps diffuse and glossy bounces at 4).
+for cap in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces",
+            "transparent_max_bounces"):
+    setattr(cycles, cap, params["max_bounces"])
+# Strata jitters each sample uniformly over its pixel: a box filter one pixel wide.
+cycles.pixel_filter_type = 'BOX'
+cycles.filter_width = 1.0
+
+start = time.perf_counter()
+bpy.ops.render.render()
+seconds = time.perf_counter() - start
+bpy.data.images["Render Result"].save_render(params["out"])
+print("cycles render seconds: %.6f" % seconds, flush=True)
+)python";
+
+nlohmann::json triple(float x, float y, float z) { return nlohmann::json::array({x, y, z}); }
+
+}  // namespace
+
+std::string_view cyclesScript() { return kScript; }
+
+std::string cyclesParameters(const CyclesJob& job) {
+    nlohmann::json materials = nlohmann::json::object();
+    for (const Material& m : job.materials) {
+        materials[m.name] = {{"kd", triple(m.diffuse.x, m.diffuse.y, m.diffuse.z)},
+                             {"ke", triple(m.emission.x, m.emission.y, m.emission.z)}};
+    }
+    const CameraPose& pose = job.pose;
+    const nlohmann::json parameters = {
+        {"obj", std::filesystem::absolute(job.obj).string()},
+        {"scale", job.scale},
+        {"materials", materials},
+        {"position", triple(pose.position.x, pose.position.y, pose.position.z)},
+        {"look_at", triple(pose.lookAt.x, pose.lookAt.y, pose.lookAt.z)},
+        {"up", triple(pose.up.x, pose.up.y, pose.up.z)},
+        {"fov_y", pose.fovYDegrees},
+        {"width", job.width},
+        {"height", job.height},
+        {"spp", job.spp},
+        {"max_bounces", job.maxBounces},
+        {"threads", job.threads},
+        {"seed", job.seed},
+        {"out", std::filesystem::absolute(job.out).string()}};
+    return parameters.dump(2) + "\n";
+}
+
+std::vector<std::string> cyclesCommandLine(const std::filesystem::path& script,
+                                           const std::filesystem::path& parameters) {
+    return {"blender", "-b", "--factory-startup", "--python-exit-code", "1", "--python",
+            script.string(), "--", parameters.string()};
+}
+
+int cyclesMaxBounces(int strataDepth) {
+    if (strataDepth < 1) {
+        throw Error("--depth " + std::to_string(strataDepth) +
+                    ": Cycles follows every path through at least one bounce (depth >= 1)");
+    }
+    return strataDepth - 1;
+}
+
+double cyclesUnitScale(const MeshData& mesh) {
+    if (mesh.positions.empty()) return 1.0;
+    glm::vec3 lo = mesh.positions.front(), hi = lo;
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double side = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    return side > 0.0 ? 1.0 / side : 1.0;
+}
+
+std::optional<double> parseCyclesSeconds(std::string_view log) {
+    std::optional<double> seconds;
+    size_t start = 0;
+    while (start < log.size()) {
+        const size_t end = std::min(log.find('\n', start), log.size());
+        const std::string_view line = log.substr(start, end - start);
+        start = end + 1;
+        if (line.substr(0, kSecondsLabel.size()) != kSecondsLabel) continue;
+        const std::string_view number = line.substr(kSecondsLabel.size());
+        double value = 0.0;
+        const auto [rest, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+        const bool whole = rest == number.data() + number.size() ||
+                           std::string_view(rest, number.data() + number.size() - rest) == "\r";
+        if (error == std::errc() && whole && std::isfinite(value) && value >= 0.0) seconds = value;
+    }
+    return seconds;
+}
+
+}  // namespace strata
