@@ -15,10 +15,19 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     area_ = static_cast<float>(0.5 * glm::length(glm::dvec3(cross)));
 }
 
+AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
+                     const std::array<glm::vec2, 3>& uvs)
+    : AreaLight(p0, p1, p2, material.meanEmission()) {
+    textured_ = &material;
+    uvs_ = uvs;
+}
+
 std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u) const {
     // Uniform by area: barycentrics (1 - sqrt(u), sqrt(u)(1 - v), sqrt(u) v).
     const float s = std::sqrt(u.x);
-    const glm::vec3 onLight = p0_ + (s * (1.0f - u.y)) * edge1_ + (s * u.y) * edge2_;
+    const float b1 = s * (1.0f - u.y);
+    const float b2 = s * u.y;
+    const glm::vec3 onLight = p0_ + b1 * edge1_ + b2 * edge2_;
     const glm::vec3 toLight = onLight - point;
     const float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) return std::nullopt;
@@ -26,7 +35,7 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    return LightSample{direction, distance, radiance_, distanceSquared / (area_ * cosLight), true};
+    return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true};
 }
 
 float AreaLight::pdf(const glm::vec3& /*point*/, const glm::vec3& direction, const LightHit& hit) const {
@@ -36,10 +45,11 @@ float AreaLight::pdf(const glm::vec3& /*point*/, const glm::vec3& direction, con
 }
 
 glm::vec3 AreaLight::emitted(const glm::vec3& direction, const LightHit& hit) const {
-    return glm::dot(hit.normal, direction) < 0.0f ? radiance_ : glm::vec3(0.0f);
+    return glm::dot(hit.normal, direction) < 0.0f ? radianceAt(hit.barycentrics.x, hit.barycentrics.y)
+                                                : glm::vec3(0.0f);
 }
 
-// Lambertian emission into one hemisphere: pi Le A.
+// Lambertian emission into one hemisphere: pi Le A (Le's texture mean for a textured emitter).
 glm::vec3 AreaLight::power() const { return kPi * area_ * radiance_; }
 
 }  // namespace strata
