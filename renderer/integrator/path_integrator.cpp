@@ -78,7 +78,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         }
         const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
         if (triangle.light >= 0) {
-            const LightHit onLight{triangle.normal, hit->t};
+            const LightHit onLight{triangle.normal, hit->t, {hit->u, hit->v}};
             radiance += weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
                                               onLight, previous);
         }
@@ -91,7 +91,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         // The strata, the BSDF's cosines and wo live in the shading frame.
         const Frame frame = Frame::fromNormal(surface.shadingNormal);
         const glm::vec3 wo = frame.toLocal(-ray.direction);
-        const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material);
+        const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
         // Light that reaches the camera after this vertex's reflection counts as bounce + 1
         // bounces, which the depth allows here.
         if (sampleLights_) {

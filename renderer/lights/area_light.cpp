@@ -19,6 +19,25 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
                         glm::distance(centroid_, glm::dvec3(p2))});
 }
 
+AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
+                     const std::array<glm::vec2, 3>& uvs, double minSphericalSolidAngle)
+    : AreaLight(p0, p1, p2, material.meanEmission(), minSphericalSolidAngle) {
+    textured_ = &material;
+    uvs_ = uvs;
+}
+
+glm::vec3 AreaLight::radianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const {
+    if (!textured_) return radiance_;
+    // The barycentrics of the point reached, from the sub-triangles' areas.
+    const glm::dvec3 a(p0_), e1 = glm::dvec3(p1_) - a, e2 = glm::dvec3(p2_) - a;
+    const glm::dvec3 q = point + distance * direction - a;
+    const glm::dvec3 n = glm::cross(e1, e2);
+    const double twiceArea = glm::dot(n, n);
+    const double b1 = glm::dot(glm::cross(q, e2), n) / twiceArea;
+    const double b2 = glm::dot(glm::cross(e1, q), n) / twiceArea;
+    return radianceAt(static_cast<float>(b1), static_cast<float>(b2));
+}
+
 std::optional<SphericalTriangle> AreaLight::spherical(const glm::vec3& point) const {
     // Only a point in front sees the emitting side; behind, area sampling finds nothing either.
     const glm::dvec3 x(point);
@@ -45,14 +64,17 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     const double cosLight = -glm::dot(glm::dvec3(normal_), direction);
     if (!(cosLight > 0.0)) return std::nullopt;
     const double distance = glm::dot(glm::dvec3(normal_), glm::dvec3(point) - glm::dvec3(p0_)) / cosLight;
-    return LightSample{glm::vec3(direction), static_cast<float>(distance), radiance_,
+    return LightSample{glm::vec3(direction), static_cast<float>(distance),
+                       radianceAlong(glm::dvec3(point), direction, distance),
                        static_cast<float>(1.0 / triangle->solidAngle()), true};
 }
 
 std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
     // Uniform by area: barycentrics (1 - sqrt(u), sqrt(u)(1 - v), sqrt(u) v).
     const float s = std::sqrt(u.x);
-    const glm::vec3 onLight = p0_ + (s * (1.0f - u.y)) * (p1_ - p0_) + (s * u.y) * (p2_ - p0_);
+    const float b1 = s * (1.0f - u.y);
+    const float b2 = s * u.y;
+    const glm::vec3 onLight = p0_ + b1 * (p1_ - p0_) + b2 * (p2_ - p0_);
     const glm::vec3 toLight = onLight - point;
     const float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) return std::nullopt;
@@ -60,7 +82,7 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    return LightSample{direction, distance, radiance_, distanceSquared / (area_ * cosLight), true};
+    return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true};
 }
 
 float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const {
@@ -71,10 +93,11 @@ float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const L
 }
 
 glm::vec3 AreaLight::emitted(const glm::vec3& direction, const LightHit& hit) const {
-    return glm::dot(hit.normal, direction) < 0.0f ? radiance_ : glm::vec3(0.0f);
+    return glm::dot(hit.normal, direction) < 0.0f ? radianceAt(hit.barycentrics.x, hit.barycentrics.y)
+                                                : glm::vec3(0.0f);
 }
 
-// Lambertian emission into one hemisphere: pi Le A.
+// Lambertian emission into one hemisphere: pi Le A (Le's texture mean for a textured emitter).
 glm::vec3 AreaLight::power() const { return kPi * area_ * radiance_; }
 
 }  // namespace strata

@@ -4,7 +4,16 @@
 // sampled uniformly by solid angle (Arvo's map, sampling/spherical_triangle.h), density
 // 1 / Omega; otherwise uniformly by area, density d^2 / (A cos(theta_light)). Which of the two
 // depends only on the point and the triangle, so sample() and pdf() always agree.
+//
+// A textured emitter (a material with an emission texture or a cut-out, material.h) takes its
+// radiance at each point from the material at that point's UV, both where a light sample lands
+// and where a ray hits it, so the estimator stays unbiased; its power, by which lights are
+// chosen, uses Ke's mean over the emission texture, positive wherever the radiance can be.
+#include <array>
+#include <glm/vec2.hpp>
+
 #include "lights/light.h"
+#include "materials/material.h"
 #include "sampling/spherical_triangle.h"
 
 namespace strata {
@@ -30,6 +39,10 @@ public:
     // spherical map is well conditioned.
     AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& radiance,
               double minSphericalSolidAngle = kMinSphericalSolidAngle);
+    // A textured emitter: radiance material.emissionAt(uv), `uvs` its corners' coordinates;
+    // `material` outlives the light.
+    AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
+              const std::array<glm::vec2, 3>& uvs, double minSphericalSolidAngle = kMinSphericalSolidAngle);
 
     std::optional<LightSample> sample(const glm::vec3& point, glm::vec2 u) const override;
     float pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const override;
@@ -44,6 +57,13 @@ private:
     // The triangle as seen from `point` when it is sampled by solid angle from there.
     std::optional<SphericalTriangle> spherical(const glm::vec3& point) const;
     std::optional<LightSample> sampleArea(const glm::vec3& point, glm::vec2 u) const;
+    // Le at barycentrics (b1, b2) of vertices 1 and 2.
+    glm::vec3 radianceAt(float b1, float b2) const {
+        if (!textured_) return radiance_;
+        return textured_->emissionAt((1.0f - b1 - b2) * uvs_[0] + b1 * uvs_[1] + b2 * uvs_[2]);
+    }
+    // Le where the ray from `point` along `direction` meets the triangle at `distance`.
+    glm::vec3 radianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const;
 
     glm::vec3 p0_, p1_, p2_;
     glm::vec3 normal_;  // unit, the emitting side's
@@ -52,6 +72,8 @@ private:
     glm::dvec3 centroid_;
     double radius_;  // of the sphere about the centroid through the farthest vertex
     double minSphericalSolidAngle_;
+    const Material* textured_ = nullptr;
+    std::array<glm::vec2, 3> uvs_{};
 };
 
 }  // namespace strata

@@ -22,11 +22,13 @@ struct LightSample {
 };
 
 // Where a ray reached a light: for a light on the scene's triangles, the triangle's unit
-// geometric normal and the distance along the (unit) ray; a ray that left the scene has distance
+// geometric normal, the distance along the (unit) ray and the hit's barycentrics of vertices 1
+// and 2 (where a textured emitter looks up its radiance); a ray that left the scene has distance
 // infinity and no normal.
 struct LightHit {
     glm::vec3 normal{0.0f};
     float distance = 0.0f;
+    glm::vec2 barycentrics{0.0f};
 };
 
 class Light {

@@ -41,11 +41,13 @@ std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) 
 SceneLights::SceneLights(const MeshData& mesh)
     : triangleLight_(mesh.triangles.size(), -1), sampler_({}) {
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-        const glm::vec3& radiance = mesh.materials[mesh.triangleMaterials[i]].emission;
-        if (isBlack(radiance)) continue;
+        const Material& material = mesh.materials[mesh.triangleMaterials[i]];
+        if (isBlack(material.emission)) continue;
         const auto& t = mesh.triangles[i];
-        auto light = std::make_unique<AreaLight>(mesh.positions[t[0]], mesh.positions[t[1]],
-                                                 mesh.positions[t[2]], radiance);
+        const glm::vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+        auto light = material.textures.emission || material.textures.coverage
+                         ? std::make_unique<AreaLight>(p0, p1, p2, material, cornerUvs(mesh, i))
+                         : std::make_unique<AreaLight>(p0, p1, p2, material.emission);
         if (!(light->area() > 0.0f)) continue;
         triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
     }

@@ -44,6 +44,8 @@ public:
     // Whether the material reflects nothing (a path ends there).
     bool isBlack() const { return !hasDiffuse_ && !hasSpecular_; }
     bool hasSpecular() const { return hasSpecular_; }
+    // The specular layer's lobe (null when the BSDF was made without one).
+    const SpecularLobe* lobe() const { return lobe_; }
 
     // f_r(wo, wi); 0 when wi is below the surface.
     // Inline for the Lambertian case, which every hemisphere sampler's weight calls.

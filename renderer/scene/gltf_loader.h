@@ -1,14 +1,14 @@
 #pragma once
 // The glTF 2.0 format (.gltf with its buffers and images, .glb) through tinygltf. The default
-// scene's node hierarchy is flattened into one mesh in world space (metres): triangle primitives
-// with their normals, the metallic-roughness factors mapped onto Strata's material, the first
-// perspective camera and the KHR_lights_punctual lights. tinygltf checks the JSON; the accessors,
-// indices and node references it does not check are checked here, each failure one line naming
-// the file and what is wrong.
+// scene's node hierarchy is flattened into one mesh in world space (metres, gltf_nodes.h):
+// triangle primitives with their normals and UVs, the metallic-roughness materials and their
+// textures (gltf_materials.h), the first perspective camera and the KHR_lights_punctual lights
+// (gltf_cameras_lights.h). tinygltf checks the JSON; the accessors, indices and node references
+// it does not check are checked here (gltf_accessors.h), each failure one line naming the file and
+// what is wrong.
 //
-// Not rendered yet, each noted once in LoadReport::warnings: textures (the factors alone are
-// used), alphaMode MASK/BLEND (opaque), orthographic cameras (the scene is framed), spot lights'
-// cones (they light as point lights).
+// Not rendered yet, each noted once in LoadReport::warnings: orthographic cameras (the scene is
+// framed), spot lights' cones (they light as point lights), KHR_texture_transform.
 #include <filesystem>
 #include <vector>
 
@@ -18,7 +18,7 @@ namespace strata {
 
 // The format's reading (scene_format.h): `path` and every buffer and image file it refers to by
 // URI (data: URIs are inside it), named by their URIs, relative to its folder; a missing image
-// is left out (textures are not rendered yet). Throws strata::Error naming a malformed file or a
+// is left out (parsing warns and uses the material's factors alone). Throws strata::Error naming a malformed file or a
 // missing buffer.
 std::vector<SceneFile> readGltfScene(const std::filesystem::path& path);
 

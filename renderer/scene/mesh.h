@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "lights/directional_light.h"
@@ -16,6 +17,7 @@
 namespace strata {
 
 inline constexpr std::array<uint32_t, 3> kNoNormals{UINT32_MAX, UINT32_MAX, UINT32_MAX};
+inline constexpr std::array<uint32_t, 3> kNoUvs = kNoNormals;
 
 struct MeshData {
     std::vector<glm::vec3> positions;
@@ -27,10 +29,22 @@ struct MeshData {
     // triangle. Empty: every triangle is flat (its geometric normal).
     std::vector<glm::vec3> normals;
     std::vector<std::array<uint32_t, 3>> triangleNormals;
+    // Texture coordinates (textures/texture.h's convention: origin lower-left, v up), likewise:
+    // three indices into `uvs` per triangle, or kNoUvs for a triangle without (its texture
+    // lookups all read uv (0, 0)). Empty: no triangle has any.
+    std::vector<glm::vec2> uvs;
+    std::vector<std::array<uint32_t, 3>> triangleUvs;
     std::vector<Material> materials;
     std::vector<PointLight> pointLights;
     std::vector<DirectionalLight> directionalLights;
     Environment environment;
 };
+
+// The texture coordinates of a triangle's corners, (0, 0) for one without.
+inline std::array<glm::vec2, 3> cornerUvs(const MeshData& mesh, size_t triangle) {
+    if (mesh.triangleUvs.empty() || mesh.triangleUvs[triangle] == kNoUvs) return {};
+    const auto& c = mesh.triangleUvs[triangle];
+    return {mesh.uvs[c[0]], mesh.uvs[c[1]], mesh.uvs[c[2]]};
+}
 
 }  // namespace strata

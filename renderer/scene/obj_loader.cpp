@@ -16,6 +16,9 @@
 
 #include "util/error.h"
 #include "materials/microfacet.h"
+#include "materials/normal_map.h"
+#include "scene/mtl_texture_statement.h"
+#include "scene/scene_textures.h"
 #include "util/text_file.h"
 
 namespace strata {
@@ -243,6 +246,13 @@ struct MtlMaterial {
     // Whether it gives a roughness Pr (else it comes from Ns: tinyobjloader reads an absent Pr as
     // 0, which cannot be told from an explicit 0).
     bool hasRoughness = false;
+    bool hasEmission = false;  // whether it has a Ke line
+    struct TextureLine {
+        std::string key;
+        MtlTextureStatement statement;
+        size_t line;
+    };
+    std::vector<TextureLine> textures;
 };
 
 // The MTL text as tinyobjloader is to read it, built by scanMtl: each newmtl names its material
@@ -252,9 +262,11 @@ std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
 // tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
-// uses are checked; the others (Ka, Tf, Ni, d, illum, map_Kd -bm 1.0 ...) pass as they are.
+// uses are checked; the others (Ka, Tf, Ni, d, illum, ...) pass as they are. The texture
+// statements Strata reads (mtl_texture_statement.h) are kept with their material instead, and
+// one that names no file is a warning.
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
-             std::string& tinyobjText) {
+             std::string& tinyobjText, std::vector<std::string>& warnings) {
     const size_t first = materials.size();
     forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
@@ -265,12 +277,24 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         }
         const bool colour = key == "Kd" || key == "Ke" || key == "Ks";
         const bool scalar = key == "Ns" || key == "Pr";
-        if ((colour || scalar) && materials.size() == first) {
+        const bool texture = isMtlTextureKey(key);
+        if ((colour || scalar || texture) && materials.size() == first) {
             failAt(name, line, "'" + std::string(key) + "' before any newmtl");
+        }
+        if (texture) {
+            const auto statement = parseMtlTextureStatement(words);
+            if (!statement) {
+                warnings.push_back(name + ":" + std::to_string(line) + ": " + std::string(key) +
+                                   " names no file; ignored");
+            } else {
+                materials.back().textures.push_back({std::string(key), *statement, line});
+            }
+            return;
         }
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
         if (key == "Pr") materials.back().hasRoughness = true;
+        if (key == "Ke") materials.back().hasEmission = true;
         appendLine(tinyobjText, words);
     });
 }
@@ -342,10 +366,60 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     return material;
 }
 
+// The textures of an MTL material's texture statements, decoded from the bundle (textures are
+// named relative to the MTL's folder, `source.file` being its bundle name `mtlName`).
+//   map_Kd  RGB times Kd, as the MTL specification says (Blender's importer replaces Kd instead;
+//           with the usual Kd 0.8 or 1 of exporters the two differ by that factor);
+//   map_Ke  RGB times Ke; a material with map_Ke and no Ke line takes Ke = 1;
+//   map_d   coverage, cut out below 0.5: the channel -imfchan names, else the image's alpha, else
+//           its first channel;
+//   norm    a tangent-space normal map, -bm scaling its x and y;
+//   map_Bump, bump  the same when the image's values are a normal map's (looksLikeNormalMap);
+//           a height map is not rendered (a warning).
+// -o and -s (UV offset and scale) are not applied, and other options are skipped (warnings).
+void addTextures(Material& material, const MtlMaterial& source, const std::string& mtlName,
+                 SceneTextures& textures, std::vector<std::string>& warnings) {
+    for (const auto& [key, statement, line] : source.textures) {
+        const std::string at = source.file + ":" + std::to_string(line) + ": " + key;
+        if (statement.offset != glm::vec2(0.0f) || statement.scale != glm::vec2(1.0f)) {
+            warnings.push_back(at + ": the options -o and -s are not applied");
+        }
+        if (!statement.unknownOption.empty()) {
+            warnings.push_back(at + ": unknown option '" + statement.unknownOption + "' skipped");
+        }
+        const std::string file = textureFileName(mtlName, statement.file);
+        const bool colour = key == "map_Kd" || key == "map_Ke";
+        auto texture = textures.file(file, colour ? TextureEncoding::Colour : TextureEncoding::Data, at);
+        if (!texture) continue;
+        if (key == "map_Kd") {
+            material.textures.colour = texture;
+        } else if (key == "map_Ke") {
+            if (!source.hasEmission) material.emission = glm::vec3(1.0f);
+            material.textures.emission = texture;
+        } else if (key == "map_d") {
+            const int channels = texture->channels();
+            int channel = channels == 2 || channels == 4 ? 3 : 0;
+            if (statement.channel == 'r') channel = 0;
+            if (statement.channel == 'g') channel = 1;
+            if (statement.channel == 'b') channel = 2;
+            material.textures.coverage = texture;
+            material.textures.coverageChannel = channel;
+            material.textures.alphaCutoff = 0.5f;
+        } else if (key == "norm" || looksLikeNormalMap(*texture)) {
+            material.textures.normal = texture;
+            material.textures.normalScale = statement.bumpMultiplier;
+        } else {
+            warnings.push_back(at + ": '" + statement.file +
+                               "' holds heights, not normals; bump mapping is not rendered, ignored");
+        }
+    }
+}
+
 // Builds the mesh from the OBJ that validateObj accepted and the MTL files scanMtl accepted
 // (`materials`, `mtlText`); `warnings` are those found so far.
-MeshData buildMesh(const std::string& objText, const std::string& objName, const ObjScan& scan,
-                   const std::vector<MtlMaterial>& materials, const std::string& mtlText,
+MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const std::string& objName,
+                   const ObjScan& scan, const std::vector<MtlMaterial>& materials,
+                   const std::vector<std::string>& mtlNames, const std::string& mtlText,
                    std::vector<std::string> warnings, LoadReport* report) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
@@ -371,9 +445,17 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
     for (size_t v : scan.nonFiniteVertices) {
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
+    SceneTextures textures(bundle, warnings);
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+        addTextures(mesh.materials.back(), materials[i], mtlNames[i], textures, warnings);
     }
+    // vt u v as they are (texture.h's convention is OBJ's); the w of 3D texture coordinates
+    // is not read.
+    for (size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) {
+        mesh.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+    }
+    bool anyUvs = false;
     // Faces without a material get the default; it is appended only when used.
     const auto defaultMaterial = static_cast<uint32_t>(mesh.materials.size());
     bool defaultUsed = false;
@@ -393,13 +475,18 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
             std::array<uint32_t, 3> tri;
             std::array<uint32_t, 3> normals = kNoNormals;  // stays so on corners without vn
+            std::array<uint32_t, 3> uvs = kNoUvs;
             bool cornersHaveNormals = true;
+            bool cornersHaveUvs = true;
             for (size_t k = 0; k < 3; ++k) {
                 const tinyobj::index_t& corner = indices[3 * f + k];
                 tri[k] = static_cast<uint32_t>(corner.vertex_index);
                 if (tri[k] >= mesh.positions.size()) {
                     throw Error(objName + ": a face refers to a missing vertex");
                 }
+                cornersHaveUvs = cornersHaveUvs && corner.texcoord_index >= 0 &&
+                                 static_cast<size_t>(corner.texcoord_index) < mesh.uvs.size();
+                if (cornersHaveUvs) uvs[k] = static_cast<uint32_t>(corner.texcoord_index);
                 cornersHaveNormals = cornersHaveNormals && corner.normal_index >= 0;
                 if (corner.normal_index < 0) continue;
                 const auto normal = static_cast<size_t>(corner.normal_index);
@@ -424,6 +511,9 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
             const bool smooth = cornersHaveNormals && usable;
             anySmooth = anySmooth || smooth;
             mesh.triangleNormals.push_back(smooth ? normals : kNoNormals);
+            // A face without vt on every corner has no texture coordinates.
+            mesh.triangleUvs.push_back(cornersHaveUvs ? uvs : kNoUvs);
+            anyUvs = anyUvs || cornersHaveUvs;
 
             const int materialId = shape.mesh.material_ids[f];
             uint32_t material = defaultMaterial;
@@ -441,6 +531,10 @@ MeshData buildMesh(const std::string& objText, const std::string& objName, const
     if (!anySmooth) {
         mesh.normals.clear();
         mesh.triangleNormals.clear();
+    }
+    if (!anyUvs) {
+        mesh.uvs.clear();
+        mesh.triangleUvs.clear();
     }
     if (flatForUnusableNormals > 0) {
         warnings.push_back(objName + ":" + std::to_string(scan.firstUnusableNormalLine) +
@@ -465,13 +559,17 @@ MeshData parseObj(const std::string& objText, const std::string& objName,
     const ObjScan scan = validateObj(objText, objName);
     std::vector<MtlMaterial> materials;
     std::string tinyobjMtl;
+    std::vector<std::string> warnings = scan.warnings;
     // Checked in any case, so that a test of MTL lines needs no OBJ to load them.
-    scanMtl(mtlText, mtlName, materials, tinyobjMtl);
+    scanMtl(mtlText, mtlName, materials, tinyobjMtl, warnings);
     if (scan.libraries.empty()) {
         materials.clear();
         tinyobjMtl.clear();
     }
-    return buildMesh(objText, objName, scan, materials, tinyobjMtl, scan.warnings, report);
+    // No files besides: the textures the MTL names are missing (warnings).
+    const SceneBundle bundle{objName, {}, std::nullopt, std::nullopt};
+    const std::vector<std::string> mtlNames(materials.size(), mtlName);
+    return buildMesh(bundle, objText, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report);
 }
 
 std::vector<SceneFile> readObjScene(const std::filesystem::path& path) {
@@ -483,6 +581,21 @@ std::vector<SceneFile> readObjScene(const std::filesystem::path& path) {
         const auto file = path.parent_path() / library.name;
         if (read || !std::filesystem::is_regular_file(file)) continue;
         files.push_back({library.name, readTextFile(file, "material library (named by mtllib)")});
+        // Its textures, relative to its folder; a missing one is left out (parsing warns).
+        std::vector<MtlMaterial> materials;
+        std::string unused;
+        std::vector<std::string> warnings;
+        scanMtl(files.back().bytes, file.string(), materials, unused, warnings);
+        for (const MtlMaterial& material : materials) {
+            for (const auto& texture : material.textures) {
+                const std::string name = textureFileName(library.name, texture.statement.file);
+                const auto texturePath = path.parent_path() / name;
+                const bool known = std::any_of(files.begin(), files.end(),
+                                               [&](const SceneFile& f) { return f.name == name; });
+                if (known || !std::filesystem::is_regular_file(texturePath)) continue;
+                files.push_back({name, readTextFile(texturePath, "texture")});
+            }
+        }
     }
     return files;
 }
@@ -495,6 +608,7 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report) {
     // Each MTL file is checked on its own, so that a bad line is reported with its file and line;
     // tinyobjloader then reads them joined, as the OBJ's mtllib lines load them one after another.
     std::vector<MtlMaterial> materials;
+    std::vector<std::string> mtlNames;  // the bundle name of each material's MTL file
     std::string tinyobjMtl;
     std::set<std::string> scanned;
     for (const auto& library : scan.libraries) {
@@ -505,9 +619,10 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report) {
                                library.name + "' is missing; its materials are not defined");
             continue;
         }
-        scanMtl(mtl->bytes, bundle.pathOf(library.name), materials, tinyobjMtl);
+        scanMtl(mtl->bytes, bundle.pathOf(library.name), materials, tinyobjMtl, warnings);
+        mtlNames.resize(materials.size(), library.name);
     }
-    return buildMesh(obj.bytes, objName, scan, materials, tinyobjMtl, std::move(warnings), report);
+    return buildMesh(bundle, obj.bytes, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report);
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, LoadReport* report) {

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "materials/normal_map.h"
 #include "util/error.h"
 
 namespace strata {
@@ -61,6 +63,9 @@ const MeshData& validated(const MeshData& mesh) {
     if (!mesh.triangleNormals.empty() && mesh.triangleNormals.size() != mesh.triangles.size()) {
         throw Error("the scene needs normal indices for every triangle or none");
     }
+    if (!mesh.triangleUvs.empty() && mesh.triangleUvs.size() != mesh.triangles.size()) {
+        throw Error("the scene needs texture coordinate indices for every triangle or none");
+    }
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
         for (uint32_t index : mesh.triangles[i]) {
             if (index >= mesh.positions.size()) throw Error("a triangle's vertex index is out of range");
@@ -71,6 +76,11 @@ const MeshData& validated(const MeshData& mesh) {
         if (!mesh.triangleNormals.empty() && mesh.triangleNormals[i] != kNoNormals) {
             for (uint32_t index : mesh.triangleNormals[i]) {
                 if (index >= mesh.normals.size()) throw Error("a triangle's normal index is out of range");
+            }
+        }
+        if (!mesh.triangleUvs.empty() && mesh.triangleUvs[i] != kNoUvs) {
+            for (uint32_t index : mesh.triangleUvs[i]) {
+                if (index >= mesh.uvs.size()) throw Error("a triangle's texture coordinate index is out of range");
             }
         }
     }
@@ -91,16 +101,49 @@ MeshData& orientedToNormals(MeshData& mesh) {
         if (glm::dot(winding, shading) < 0.0f) {
             std::swap(tri[1], tri[2]);
             std::swap(corners[1], corners[2]);
+            if (!mesh.triangleUvs.empty()) std::swap(mesh.triangleUvs[i][1], mesh.triangleUvs[i][2]);
         }
     }
     return mesh;
+}
+
+bool isCutout(const MeshData& mesh, size_t triangle) {
+    return mesh.materials[mesh.triangleMaterials[triangle]].textures.coverage != nullptr;
+}
+
+// Moves the triangles of cut-out materials after all others (stably), so that each kind is one
+// contiguous range of the index buffer, an Embree geometry of its own.
+MeshData& cutoutsLast(MeshData& mesh) {
+    std::vector<uint32_t> order(mesh.triangles.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_partition(order.begin(), order.end(), [&](uint32_t i) { return !isCutout(mesh, i); });
+    const auto permuted = [&](auto& list) {
+        if (list.empty()) return;
+        auto copy = list;
+        for (size_t i = 0; i < order.size(); ++i) list[i] = copy[order[i]];
+    };
+    permuted(mesh.triangles);
+    permuted(mesh.triangleMaterials);
+    permuted(mesh.triangleNormals);
+    permuted(mesh.triangleUvs);
+    return mesh;
+}
+
+// An Embree geometry of triangles [first, first + count) of the mesh, which it reads in place.
+RTCGeometry triangleGeometry(RTCDevice device, const MeshData& mesh, size_t first, size_t count) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               mesh.positions.data(), 0, sizeof(glm::vec3), mesh.positions.size());
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(),
+                               first * sizeof(std::array<uint32_t, 3>), sizeof(std::array<uint32_t, 3>), count);
+    return geometry;
 }
 }  // namespace
 
 Scene::Scene(MeshData mesh)
     : mesh_(std::move(mesh)),
       materials_(validated(mesh_).materials),
-      lights_(orientedToNormals(mesh_)) {
+      lights_(cutoutsLast(orientedToNormals(mesh_))) {
     boundsMin_ = glm::vec3(std::numeric_limits<float>::infinity());
     boundsMax_ = -boundsMin_;
     for (const auto& p : mesh_.positions) {
@@ -124,26 +167,40 @@ Scene::Scene(MeshData mesh)
         if (triangles_.back().light >= 0) {
             ++summary_.emitters;
             summary_.emittingArea += 0.5 * glm::length(glm::dvec3(cross));
-            summary_.maxEmission = glm::max(summary_.maxEmission, maxComponent(m.emission));
+            summary_.maxEmission = glm::max(summary_.maxEmission, m.maxEmission());
         }
     }
 
     RTCDevice device = embreeDevice();
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree reads the arrays in place: positions padded by the 4 bytes it may read past the end.
     mesh_.positions.reserve(mesh_.positions.size() + 1);
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                               mesh_.positions.data(), 0, sizeof(glm::vec3), mesh_.positions.size());
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                               mesh_.triangles.data(), 0, sizeof(std::array<uint32_t, 3>),
-                               mesh_.triangles.size());
-    rtcCommitGeometry(geometry);
     rtcScene_ = rtcNewScene(device);
     // ROBUST: watertight traversal, so rays do not slip through shared edges.
     rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
-    rtcAttachGeometry(rtcScene_, geometry);
-    rtcReleaseGeometry(geometry);
+    const size_t count = mesh_.triangles.size();
+    size_t first = 0;
+    while (first < count && !isCutout(mesh_, first)) ++first;
+    firstCutout_ = static_cast<uint32_t>(first);
+    // Geometry 0: the opaque triangles; geometry 1: the cut-outs, behind their filter.
+    if (first > 0) {
+        RTCGeometry opaque = triangleGeometry(device, mesh_, 0, first);
+        rtcCommitGeometry(opaque);
+        rtcAttachGeometryByID(rtcScene_, opaque, 0);
+        rtcReleaseGeometry(opaque);
+    }
+    if (first < count) {
+        cutouts_ = std::make_unique<CutoutTriangles>();
+        for (size_t i = first; i < count; ++i) {
+            cutouts_->uvs.push_back(cornerUvs(mesh_, i));
+            cutouts_->materials.push_back(&material(static_cast<uint32_t>(i)));
+        }
+        RTCGeometry cutout = triangleGeometry(device, mesh_, first, count - first);
+        attachCutoutFilter(cutout, *cutouts_);
+        rtcCommitGeometry(cutout);
+        rtcAttachGeometryByID(rtcScene_, cutout, 1);
+        rtcReleaseGeometry(cutout);
+    }
     rtcCommitScene(rtcScene_);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE) throw Error("Embree could not build the scene");
 }
@@ -160,7 +217,9 @@ Scene::Scene(Scene&& other) noexcept
       summary_(other.summary_),
       boundsMin_(other.boundsMin_),
       boundsMax_(other.boundsMax_),
-      rtcScene_(other.rtcScene_) {
+      rtcScene_(other.rtcScene_),
+      firstCutout_(other.firstCutout_),
+      cutouts_(std::move(other.cutouts_)) {
     other.rtcScene_ = nullptr;
 }
 
@@ -186,7 +245,8 @@ std::optional<RayHit> Scene::intersect(const Ray& ray) const {
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(rtcScene_, &context, &rayHit);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return RayHit{rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v, rayHit.hit.primID};
+    const uint32_t triangle = rayHit.hit.primID + (rayHit.hit.geomID == 1 ? firstCutout_ : 0);
+    return RayHit{rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v, triangle};
 }
 
 SurfaceHit Scene::surface(const RayHit& rayHit) const {
@@ -232,6 +292,21 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
         if (length > 1e-6f) {
             hit.shadingNormal = interpolated / length;
             hit.smooth = true;
+        }
+    }
+    hit.uv = glm::vec2(0.0f);
+    if (!mesh_.triangleUvs.empty() && mesh_.triangleUvs[triangle] != kNoUvs) {
+        const auto& corners = mesh_.triangleUvs[triangle];
+        hit.uv = b0 * mesh_.uvs[corners[0]] + b1 * mesh_.uvs[corners[1]] + b2 * mesh_.uvs[corners[2]];
+        const MaterialTextures& textures = material(triangle).textures;
+        if (textures.normal) {
+            const auto tangents = surfaceTangents({p0, p1, p2}, cornerUvs(mesh_, triangle));
+            if (tangents) {
+                const glm::vec3 mapped =
+                    mappedNormal(*textures.normal, textures.normalScale, hit.uv, hit.shadingNormal, *tangents);
+                hit.smooth = hit.smooth || mapped != hit.shadingNormal;
+                hit.shadingNormal = mapped;
+            }
         }
     }
     hit.triangle = triangle;

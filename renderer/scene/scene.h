@@ -7,14 +7,17 @@
 // surface record a scattering vertex needs (SurfaceHit: point, error bound, normal) is computed
 // from it only where a path goes on, not at its last bounce nor at a black surface.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 #include <embree3/rtcore.h>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "geometry/ray.h"
 #include "lights/scene_lights.h"
 #include "materials/material_table.h"
+#include "scene/cutout_filter.h"
 #include "scene/mesh.h"
 
 namespace strata {
@@ -33,9 +36,11 @@ struct SurfaceHit {
     glm::vec3 point;          // on the triangle, from barycentrics (not origin + t * direction)
     glm::vec3 pointError;     // per axis: how far a new ray's origin must clear the surface
     glm::vec3 normal;         // unit geometric normal, counter-clockwise = front
-    glm::vec3 shadingNormal;  // unit, interpolated from the vertex normals; `normal` when flat
+    glm::vec3 shadingNormal;  // unit: interpolated from the vertex normals, then normal-mapped;
+                              // `normal` when flat
+    glm::vec2 uv;             // texture coordinates, (0, 0) on a triangle without
     uint32_t triangle;
-    bool smooth;              // the shading normal is interpolated (else it is `normal`)
+    bool smooth;              // the shading normal is not `normal` (interpolated or mapped)
 };
 
 struct SceneSummary {
@@ -50,7 +55,10 @@ class Scene {
 public:
     // Throws strata::Error if the mesh has no triangles or an index is out of range. A triangle
     // whose winding disagrees with its vertex normals is turned over, so that its front (the side
-    // it emits from) is the side its normals show.
+    // it emits from) is the side its normals show. Triangles of cut-out materials (with a
+    // coverage texture) are moved after all others, in their order, for their own Embree
+    // geometry (cutout_filter.h): mesh().triangles is in that order, which is the one hits and
+    // lights use.
     explicit Scene(MeshData mesh);
     ~Scene();
     Scene(Scene&& other) noexcept;
@@ -97,6 +105,8 @@ private:
     glm::vec3 boundsMin_{0.0f};
     glm::vec3 boundsMax_{0.0f};
     RTCScene rtcScene_ = nullptr;
+    uint32_t firstCutout_ = 0;  // triangles from here on are in the cut-out geometry
+    std::unique_ptr<CutoutTriangles> cutouts_;
 };
 
 // Moves a ray origin off a surface so that the new ray cannot hit the surface it leaves, however

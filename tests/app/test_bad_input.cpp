@@ -218,7 +218,17 @@ const std::vector<ToleratedCase> kToleratedCases = {
      {{"s.mtl", "newmtl\nKd 1 1 1\nnewmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nKa 1 1 1\nTf 1 1 1\nNi 1.5\n"
                 "d 1\nTr 0\nillum 2\nmap_Kd -bm 1.0 -s 1 1 1 wood.png\nmap_d a.png\nmap_Ke e.png\n"
                 "norm n.png\nmap_Bump -bm 0.5 b.png\nbump b.png\n"}},
-     {}, "2 emitting (area 1), max albedo 0.5, 0 point lights, extent 1 x 0 x 1\n"},
+     {"s.mtl:12: map_Kd: texture file 'wood.png' is missing; using the factor alone",
+      "s.mtl:13: map_d: texture file 'a.png' is missing; using the factor alone",
+      "s.mtl:14: map_Ke: texture file 'e.png' is missing; using the factor alone",
+      "s.mtl:15: norm: texture file 'n.png' is missing; using the factor alone",
+      "s.mtl:16: map_Bump: texture file 'b.png' is missing; using the factor alone",
+      "s.mtl:17: bump: texture file 'b.png' is missing; using the factor alone"},
+     "2 emitting (area 1), max albedo 0.5, 0 point lights, extent 1 x 0 x 1, 6 warnings\n"},
+    {"MTL texture that does not decode",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd bad.png\n"}, {"bad.png", "\x89PNG\r\n\x1a\nbroken"}},
+     {"s.mtl:4: map_Kd: bad.png: cannot decode the texture (unknown image type); using the factor alone"},
+     "2 emitting"},
 };
 
 

@@ -28,6 +28,12 @@ void checkMesh(const MeshData& mesh, const LoadReport& report) {
     require(report.faces == mesh.triangles.size(), "a wrong face count");
     require(mesh.triangleNormals.empty() || mesh.triangleNormals.size() == mesh.triangles.size(),
             "not one normal triple per triangle");
+    require(mesh.triangleUvs.empty() || mesh.triangleUvs.size() == mesh.triangles.size(),
+            "not one texture coordinate triple per triangle");
+    for (const auto& corners : mesh.triangleUvs) {
+        if (corners == kNoUvs) continue;
+        for (uint32_t index : corners) require(index < mesh.uvs.size(), "a texture coordinate index out of range");
+    }
     for (const auto& corners : mesh.triangleNormals) {
         if (corners == kNoNormals) continue;
         for (uint32_t index : corners) require(index < mesh.normals.size(), "a normal index out of range");
@@ -67,16 +73,28 @@ std::string_view nextPart(std::string_view& rest) {
 }  // namespace
 
 void parseLoaderInput(std::string_view input) {
-    // The OBJ's "mtllib fuzz.mtl" loads the MTL part, as from files.
-    SceneBundle bundle{"fuzz.obj", {}, std::nullopt, std::nullopt};
-    bundle.files.push_back({"fuzz.obj", std::string(nextPart(input))});
-    bundle.files.push_back({"fuzz.mtl", std::string(nextPart(input))});
-    const std::string json(input);
+    // The OBJ's "mtllib fuzz.mtl" loads the MTL part, as from files; its texture statements and
+    // the glTF's image URIs find the texture part as fuzz.png.
+    const std::string obj(nextPart(input));
+    const std::string mtl(nextPart(input));
+    const std::string json(nextPart(input));
+    const std::string gltf(nextPart(input));
+    const SceneFile texture{"fuzz.png", std::string(input)};
+    SceneBundle bundle{"fuzz.obj", {{"fuzz.obj", obj}, {"fuzz.mtl", mtl}, texture}, std::nullopt, std::nullopt};
     try {
         LoadReport report;
         const MeshData mesh = parseSceneMesh(bundle, &report);
         checkMesh(mesh, report);
     } catch (const Error&) {
+    }
+    if (!gltf.empty()) {
+        const SceneBundle gltfBundle{"fuzz.gltf", {{"fuzz.gltf", gltf}, texture}, std::nullopt, std::nullopt};
+        try {
+            LoadReport report;
+            const MeshData mesh = parseSceneMesh(gltfBundle, &report);
+            checkMesh(mesh, report);
+        } catch (const Error&) {
+        }
     }
     try {
         const SceneDescription description = parseSceneDescription(json, "fuzz.json");

@@ -12,8 +12,11 @@
 #include <vector>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
+#include <stb_image_write.h>
 
+#include "materials/material_table.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "test_support.h"
@@ -287,19 +290,89 @@ TEST_CASE("gltf: metallic-roughness factors onto Kd, Ks, Pr; emission times its 
     CHECK(mesh.materials[2].diffuse == glm::vec3(0.0f));
 }
 
-TEST_CASE("gltf: textures and alpha modes are noted once each, not refused") {
+// A PNG of 8-bit RGBA pixels in memory.
+std::string rgbaPng(int width, int height, const std::vector<unsigned char>& pixels) {
+    std::string out;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+        },
+        &out, width, height, 4, pixels.data(), width * 4);
+    return out;
+}
+
+TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOORD_0, MASK alpha cut-outs") {
     Model model;
     const int positions = model.positions(kTriangle);
-    model.doc["materials"] = json::array({
-        {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"alphaMode", "MASK"}},
-        {{"normalTexture", {{"index", 0}}}},
+    // glTF's v runs down: texel row 0 is at v = 0, stored as 1 - v.
+    const int uvs = model.accessor(std::vector<float>{0.25f, 0.5f, 0.75f, 0.5f, 0.25f, 0.5f}, "VEC2", 5126, 3);
+    // Base colour: left texel red with alpha 255, right texel green with alpha 0 (cut out).
+    // Metallic-roughness: G = roughness 128/255... of 0.5 factor, B = metallic 255 (a metal).
+    model.doc["images"] = json::array({
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(2, 1, {255, 0, 0, 255, 0, 255, 0, 0}))}},
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {0, 255, 255, 255}))}},
+        {{"uri", "data:image/png;base64," + base64(std::string("not a PNG"))}},
     });
+    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}, {{"source", 2}}});
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness",
+          {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 1}}},
+           {"baseColorFactor", {0.5, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
+         {"alphaMode", "MASK"}, {"alphaCutoff", 0.25}},
+        {{"emissiveTexture", {{"index", 2}}}, {"emissiveFactor", {1.0, 1.0, 1.0}}, {"alphaMode", "BLEND"}},
+    });
+    model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
     model.meshNode({{"attributes", {{"POSITION", positions}}}, {"material", 1}});
     LoadReport report;
-    parse(model.gltf(), &report);
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
     CHECK(report.warnings == std::vector<std::string>{
-                                 "mem/model.gltf: textures are ignored for now (materials render with their factors alone)",
-                                 "mem/model.gltf: alphaMode MASK and BLEND are ignored for now (rendered opaque)"});
+                                 "mem/model.gltf: material '' (1): alphaMode BLEND is rendered as MASK with alphaCutoff 0.5",
+                                 "mem/model.gltf: material '' (1) emissiveTexture: image 2: cannot decode the texture "
+                                 "(unknown image type); using the factor alone"});
+    REQUIRE(mesh.uvs.size() == 3);
+    CHECK(mesh.uvs[0] == glm::vec2(0.25f, 0.5f));  // 1 - 0.5
+    const Material& m = mesh.materials[0];
+    REQUIRE(m.textures.colour);
+    REQUIRE(m.textures.roughnessMetallic);
+    REQUIRE(m.metallicRoughness);
+    CHECK(m.metallicRoughness->baseColor == glm::vec3(0.5f, 1.0f, 1.0f));
+    // Coverage is the base colour's alpha against the cutoff.
+    CHECK_FALSE(m.cutOut({0.25f, 0.5f}));
+    CHECK(m.cutOut({0.75f, 0.5f}));
+    // The per-hit BSDF: base colour (0.5, 0, 0) at the red texel, metallic 0 x 1 = 0: a dielectric.
+    const MaterialTable table(mesh.materials);
+    const LayeredBsdf red = table.bsdf(0, {0.25f, 0.5f});
+    const glm::vec3 albedo = red.tabulatedAlbedo({0.0f, 0.0f, 1.0f});
+    CHECK(albedo.x > albedo.y);
+    CHECK(albedo.y == albedo.z);
+    // Roughness 0.5 x 1 quantised to level 8 of 16: exactly 0.5, the factor's own lobe.
+    CHECK(red.lobe()->distribution.alpha() == doctest::Approx(0.25));
+    CHECK(!mesh.materials[1].textures.emission);
+    // BLEND as MASK at 0.5 with a base colour alpha factor of 1 and no texture: nothing cut out.
+    CHECK_FALSE(mesh.materials[1].cutOut({0.5f, 0.5f}));
+}
+
+TEST_CASE("gltf: a camera ray through a MASK-ed texel sees what is behind it") {
+    Model model;
+    // Two unit squares facing +z: the front one at z = 1 textured left opaque, right cut out.
+    const int front = model.positions({0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 1, 1});
+    const int back = model.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0});
+    const int uvs = model.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 1, 1, 0, 0, 0}, "VEC2", 5126, 6);
+    model.doc["images"] = json::array({{{"uri", "data:image/png;base64," +
+                                                     base64(rgbaPng(2, 1, {255, 255, 255, 255, 255, 255, 255, 0}))}}});
+    model.doc["textures"] = json::array({{{"source", 0}}});
+    model.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"alphaMode", "MASK"}},
+                                          {{"emissiveFactor", {1.0, 1.0, 1.0}}}});
+    model.meshNode({{"attributes", {{"POSITION", front}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    model.meshNode({{"attributes", {{"POSITION", back}}}, {"material", 1}});
+    const Scene scene(parse(model.gltf()).mesh);
+    const auto seen = [&](float x) {
+        const auto hit = scene.intersect(Ray{{x, 0.5f, 2.0f}, {0.0f, 0.0f, -1.0f}});
+        REQUIRE(hit);
+        return hit->t;
+    };
+    CHECK(seen(0.25f) == doctest::Approx(1.0f));  // the opaque half of the front square
+    CHECK(seen(0.75f) == doctest::Approx(2.0f));  // through the cut-out half onto the emitter
 }
 
 TEST_CASE("gltf: the first perspective camera, from its node, looking down -Z") {

@@ -1,0 +1,75 @@
+#include "io/texture_image.h"
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <vector>
+#include <stb_image.h>
+
+#include "io/image_io.h"
+#include "util/error.h"
+
+namespace strata {
+namespace {
+
+// Larger textures than this many texels are refused rather than allocated (a 16k x 16k image).
+constexpr size_t kMaxTexels = size_t{1} << 28;
+
+bool isExr(std::string_view bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0; }
+
+Texture decodeExr(std::string_view bytes, const std::string& name) {
+    const Image image = readExr(bytes, name);
+    std::vector<float> texels;
+    texels.reserve(image.pixels.size() * 3);
+    for (const glm::vec3& p : image.pixels) texels.insert(texels.end(), {p.x, p.y, p.z});
+    return Texture(image.width, image.height, 3, std::move(texels));
+}
+
+}  // namespace
+
+const std::array<float, 256>& srgbDecodingTable() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int code = 0; code < 256; ++code) {
+            const double c = code / 255.0;
+            t[static_cast<size_t>(code)] =
+                static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+        }
+        return t;
+    }();
+    return table;
+}
+
+Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEncoding encoding) {
+    const auto fail = [&](const std::string& reason) -> Error {
+        return Error(name + ": cannot decode the texture (" + reason + ")");
+    };
+    // readExr's messages name the file already.
+    if (isExr(bytes)) return decodeExr(bytes, name);
+    if (bytes.empty()) throw fail("the file is empty");
+    if (bytes.size() > static_cast<size_t>(INT32_MAX)) throw fail("larger than 2 GB");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
+    if (stbi_is_hdr_from_memory(data, size)) throw fail("Radiance HDR textures are not read; use EXR");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(data, size, &width, &height, &channels)) throw fail(stbi_failure_reason());
+    if (width < 1 || height < 1 || static_cast<size_t>(width) * static_cast<size_t>(height) > kMaxTexels) {
+        throw fail("unreasonable image size");
+    }
+    const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(data, size, &width, &height, &channels, 0), stbi_image_free);
+    if (!pixels) throw fail(stbi_failure_reason());
+    const auto& srgb = srgbDecodingTable();
+    // Grey and grey-alpha images have their colour in channel 0 only; the last of 2 or 4 is alpha.
+    const int colourChannels = channels == 1 || channels == 3 ? channels : channels - 1;
+    std::vector<float> texels(static_cast<size_t>(width) * height * channels);
+    for (size_t i = 0; i < texels.size(); ++i) {
+        const stbi_uc code = pixels.get()[i];
+        const bool colour = encoding == TextureEncoding::Colour &&
+                            static_cast<int>(i % static_cast<size_t>(channels)) < colourChannels;
+        texels[i] = colour ? srgb[code] : static_cast<float>(code) / 255.0f;
+    }
+    return Texture(width, height, channels, std::move(texels));
+}
+
+}  // namespace strata

@@ -1,0 +1,21 @@
+#include "materials/material.h"
+
+#include <glm/common.hpp>
+
+namespace strata {
+
+glm::vec3 Material::emissionAt(glm::vec2 uv) const {
+    if (cutOut(uv)) return glm::vec3(0.0f);
+    return textures.emission ? emission * glm::vec3(textures.emission->lookup(uv)) : emission;
+}
+
+float Material::maxEmission() const {
+    const glm::vec3 e = textures.emission ? emission * glm::vec3(textures.emission->max()) : emission;
+    return glm::max(glm::max(e.x, e.y), e.z);
+}
+
+glm::vec3 Material::meanEmission() const {
+    return textures.emission ? emission * glm::vec3(textures.emission->mean()) : emission;
+}
+
+}  // namespace strata

@@ -1,0 +1,137 @@
+#include "scene/gltf_accessors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace strata {
+namespace {
+
+size_t componentsOf(AccessorUse use) {
+    switch (use) {
+        case AccessorUse::Index: return 1;
+        case AccessorUse::TexCoord: return 2;
+        default: return 3;
+    }
+}
+
+const char* nameOf(AccessorUse use) {
+    switch (use) {
+        case AccessorUse::Position: return "POSITION";
+        case AccessorUse::Normal: return "NORMAL";
+        case AccessorUse::TexCoord: return "TEXCOORD_0";
+        case AccessorUse::Index: return "indices";
+    }
+    return "";
+}
+
+bool allowed(AccessorUse use, int componentType, bool normalized) {
+    switch (use) {
+        case AccessorUse::Position:
+            return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? !normalized
+                                                                  : componentType >= TINYGLTF_COMPONENT_TYPE_BYTE &&
+                                                                        componentType <= TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        case AccessorUse::Normal:
+            return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
+                       ? !normalized
+                       : normalized && (componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                        componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
+        case AccessorUse::TexCoord:
+            return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
+                       ? !normalized
+                       : normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                        componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        case AccessorUse::Index:
+            return !normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                   componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                                   componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    }
+    return false;
+}
+
+// One component as a number; a normalized integer maps onto [0, 1] or [-1, 1] as glTF 2.0 says
+// ("Animations": the equations for normalized integers, which KHR_mesh_quantization uses).
+double componentValue(const unsigned char* bytes, int componentType, bool normalized) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            int8_t c;
+            std::memcpy(&c, bytes, sizeof c);
+            return normalized ? std::max(c / 127.0, -1.0) : c;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? bytes[0] / 255.0 : bytes[0];
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            int16_t c;
+            std::memcpy(&c, bytes, sizeof c);
+            return normalized ? std::max(c / 32767.0, -1.0) : c;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t c;
+            std::memcpy(&c, bytes, sizeof c);
+            return normalized ? c / 65535.0 : c;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            uint32_t c;
+            std::memcpy(&c, bytes, sizeof c);
+            return c;
+        }
+        default: {
+            float c;
+            std::memcpy(&c, bytes, sizeof c);
+            return c;
+        }
+    }
+}
+
+}  // namespace
+
+// An accessor's elements, `components` numbers each, checked against its buffer view and
+// buffer so that no read leaves them.
+std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where) {
+    const tinygltf::Accessor& accessor = gltf.element(gltf.model.accessors, index, where + ": accessor");
+    const std::string what = where + ": " + nameOf(use) + " accessor " + std::to_string(index);
+    const size_t components = componentsOf(use);
+    const int wantedType = components == 1 ? TINYGLTF_TYPE_SCALAR : components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+    if (accessor.type != wantedType) {
+        gltf.fail(what + " is not a " + (components == 1 ? "SCALAR" : components == 2 ? "VEC2" : "VEC3"));
+    }
+    if (!allowed(use, accessor.componentType, accessor.normalized)) {
+        gltf.fail(what + " has component type " + std::to_string(accessor.componentType) +
+             (accessor.normalized ? " (normalized)" : "") + ", which glTF does not allow for it");
+    }
+    if (accessor.sparse.isSparse) gltf.fail(what + " is sparse, which Strata does not read yet");
+    if (accessor.count == 0) return {};
+    if (accessor.bufferView < 0) gltf.fail(what + " has no bufferView (zero-filled accessors are not supported)");
+    const tinygltf::BufferView& view = gltf.element(gltf.model.bufferViews, accessor.bufferView, what + ": bufferView");
+    const tinygltf::Buffer& buffer = gltf.element(gltf.model.buffers, view.buffer, what + ": buffer");
+    if (view.byteLength > buffer.data.size() || view.byteOffset > buffer.data.size() - view.byteLength) {
+        gltf.fail(what + ": bufferView " + std::to_string(accessor.bufferView) + " runs past the end of buffer " +
+             std::to_string(view.buffer));
+    }
+    const auto componentSize = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(
+        static_cast<uint32_t>(accessor.componentType)));
+    const size_t elementSize = componentSize * components;
+    const size_t stride = view.byteStride ? view.byteStride : elementSize;
+    if (stride < elementSize) gltf.fail(what + ": byteStride " + std::to_string(stride) + " is smaller than an element");
+    if (accessor.byteOffset > view.byteLength || elementSize > view.byteLength - accessor.byteOffset ||
+        accessor.count - 1 > (view.byteLength - accessor.byteOffset - elementSize) / stride) {
+        gltf.fail(what + ": " + std::to_string(accessor.count) + " elements run past the end of bufferView " +
+             std::to_string(accessor.bufferView));
+    }
+    const unsigned char* start = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+    std::vector<double> values(accessor.count * components);
+    for (size_t i = 0; i < accessor.count; ++i) {
+        for (size_t c = 0; c < components; ++c) {
+            values[i * components + c] =
+                componentValue(start + i * stride + c * componentSize, accessor.componentType, accessor.normalized);
+        }
+    }
+    // glTF 2.0, "Accessor Data Types": NaN and infinities must not be present.
+    if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
+        gltf.fail(what + " holds a non-finite number");
+    }
+    return values;
+}
+
+
+}  // namespace strata

@@ -1,0 +1,19 @@
+#pragma once
+// glTF accessors read into numbers, checked against their buffer views and buffers so that no
+// read leaves them, and against the component types glTF 2.0 allows for each use ("Meshes":
+// attribute types, KHR_mesh_quantization's integer ones; "Accessor Data Types" for indices).
+#include <string>
+#include <vector>
+
+#include "scene/gltf_model.h"
+
+namespace strata {
+
+// What an accessor holds for Strata: POSITION and NORMAL are VEC3, TEXCOORD_0 VEC2, indices SCALAR.
+enum class AccessorUse { Position, Normal, TexCoord, Index };
+
+// The accessor's elements, their components one after another (a normalized integer mapped onto
+// [0, 1] or [-1, 1]); throws strata::Error naming `where` and the accessor on anything malformed.
+std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where);
+
+}  // namespace strata

@@ -1,0 +1,91 @@
+#include "scene/gltf_cameras_lights.h"
+
+#include <cmath>
+#include <limits>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace strata {
+namespace {
+bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+// glTF 2.0, "Cameras": a camera looks down its node's local -Z, +Y up; the first perspective
+// one reached becomes the scene's. yfov is in radians; aspectRatio and the clip planes give
+// way to Strata's image size and unbounded rays.
+void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::optional<CameraPose>& camera) {
+    const tinygltf::Camera& gltfCamera = gltf.element(gltf.model.cameras, index, "camera");
+    if (gltfCamera.type != "perspective") {
+        gltf.warnOnce("orthographic cameras are not supported (the scene is framed instead)");
+        return;
+    }
+    if (camera) return;
+    const double yfov = gltfCamera.perspective.yfov;
+    if (!(yfov > 0.0 && yfov < glm::pi<double>())) gltf.fail("camera " + std::to_string(index) + ": yfov outside (0, pi)");
+    const glm::dvec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dvec3 forward(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+    const glm::dvec3 up(world * glm::dvec4(0.0, 1.0, 0.0, 0.0));
+    if (!(glm::length(glm::cross(forward, up)) > 0.0)) {
+        gltf.warnOnce("camera " + std::to_string(index) + " is degenerate (the scene is framed instead)");
+        return;
+    }
+    CameraPose pose;
+    pose.position = glm::vec3(position);
+    pose.lookAt = glm::vec3(position + glm::normalize(forward));
+    pose.up = glm::vec3(glm::normalize(up));
+    pose.fovYDegrees = static_cast<float>(glm::degrees(yfov));
+    camera = pose;
+}
+
+// The camera's look-at point straight ahead at the distance of the scene's centre, so that a
+// viewer orbiting it turns about the scene (the direction stays the file's).
+void aimGltfCameraAtScene(CameraPose& pose, const std::vector<glm::vec3>& positions) {
+    if (positions.empty()) return;
+    glm::vec3 lower(std::numeric_limits<float>::infinity());
+    glm::vec3 upper = -lower;
+    for (const glm::vec3& p : positions) {
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    const float distance = glm::length(0.5f * (lower + upper) - pose.position);
+    if (distance > 0.0f && std::isfinite(distance)) {
+        pose.lookAt = pose.position + distance * glm::normalize(pose.lookAt - pose.position);
+    }
+}
+
+// KHR_lights_punctual. Its intensities are photometric (candela for point and spot lights,
+// lux for directional ones); Strata takes them as radiometric without conversion: candela x
+// color as W/sr, lux x color as W/m^2. `range` is ignored (the light falls off as 1/r^2
+// everywhere, as the extension allows). A spot light lights as a point light (its cone is
+// not rendered yet). A light points down its node's local -Z.
+void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData& mesh) {
+    const tinygltf::Light& light = gltf.element(gltf.model.lights, index, "KHR_lights_punctual light");
+    const std::string name = "light '" + light.name + "' (" + std::to_string(index) + ")";
+    glm::dvec3 color(1.0);
+    if (!light.color.empty()) {
+        if (light.color.size() != 3) gltf.fail(name + ": color needs 3 numbers");
+        color = glm::make_vec3(light.color.data());
+    }
+    if (!(glm::min(glm::min(color.x, color.y), color.z) >= 0.0) || !isFinite(color) ||
+        !(light.intensity >= 0.0) || !std::isfinite(light.intensity)) {
+        gltf.fail(name + ": color and intensity must be finite and not negative");
+    }
+    const glm::vec3 emitted(light.intensity * color);
+    if (light.type == "directional") {
+        const glm::dvec3 direction(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+        if (!(glm::length(direction) > 0.0)) gltf.fail(name + ": its node's transform has no direction");
+        mesh.directionalLights.emplace_back(glm::vec3(glm::normalize(direction)), emitted);
+        return;
+    }
+    if (light.type == "spot") {
+        gltf.warnOnce("spot lights light as point lights for now (their cones are ignored)");
+    } else if (light.type != "point") {
+        gltf.fail(name + ": unknown type '" + light.type + "' (known: point, spot, directional)");
+    }
+    mesh.pointLights.emplace_back(glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0)), emitted);
+}
+
+}  // namespace strata

@@ -1,0 +1,31 @@
+#pragma once
+// glTF 2.0 materials ("Materials": metallic-roughness, "Additional Textures") onto Strata's
+// layered material (material.h, metallic_roughness.h):
+//   base colour     baseColorFactor x baseColorTexture (sRGB; its alpha is coverage for MASK);
+//   metallic, roughness  the factors x metallicRoughnessTexture's B and G (linear);
+//   emission        emissiveFactor x emissiveTexture (sRGB) x KHR_materials_emissive_strength,
+//                   from the front (counter-clockwise) side only, as Strata emits; glTF's
+//                   emission has no side, so a double-sided emitter lights only from its front;
+//   normalTexture   a tangent-space normal map with its `scale`; the tangents come from the
+//                   UVs (a TANGENT attribute is not read), the bitangent toward +v as the map's +y;
+//   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND is taken
+//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha.
+// doubleSided needs nothing: Strata reflects on both sides of every triangle. occlusionTexture is
+// not read: a path tracer finds occlusion itself. Only TEXCOORD_0 is read; a texture on another
+// set, and KHR_texture_transform (not applied), are warnings. A texture that is missing or does
+// not decode is a warning and its factor is used alone.
+#include <cstddef>
+
+#include "materials/material.h"
+#include "scene/gltf_model.h"
+#include "scene/scene_textures.h"
+
+namespace strata {
+
+// The material `index` of the model; throws strata::Error naming it for a factor outside its range.
+Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index);
+
+// The material of a primitive without one ("Materials": base colour 1, metallic 1, roughness 1).
+Material gltfDefaultMaterial();
+
+}  // namespace strata

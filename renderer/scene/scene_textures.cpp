@@ -1,0 +1,33 @@
+#include "scene/scene_textures.h"
+
+#include "util/error.h"
+
+namespace strata {
+
+std::shared_ptr<const Texture> SceneTextures::file(const std::string& name, TextureEncoding encoding,
+                                                   const std::string& where) {
+    const SceneFile* found = bundle_.find(name);
+    if (!found) {
+        const std::string line = where + ": texture file '" + name + "' is missing; using the factor alone";
+        if (std::find(warnings_.begin(), warnings_.end(), line) == warnings_.end()) warnings_.push_back(line);
+        return nullptr;
+    }
+    return bytes(name, found->bytes, encoding, where);
+}
+
+std::shared_ptr<const Texture> SceneTextures::bytes(const std::string& key, std::string_view data,
+                                                    TextureEncoding encoding, const std::string& where) {
+    const auto cached = decoded_.find({key, encoding});
+    if (cached != decoded_.end()) return cached->second;
+    std::shared_ptr<const Texture> texture;
+    try {
+        // Named as the scene names it: `where` already says which file refers to it.
+        texture = std::make_shared<const Texture>(decodeTexture(data, key, encoding));
+    } catch (const Error& error) {
+        warnings_.push_back(where + ": " + error.what() + "; using the factor alone");
+    }
+    decoded_.emplace(std::make_pair(key, encoding), texture);
+    return texture;
+}
+
+}  // namespace strata

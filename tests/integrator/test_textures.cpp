@@ -1,0 +1,147 @@
+// Textures in the path tracer: a textured emitter lights as its texture says, by light samples and
+// by bounces alike (unbiased, lights/area_light.h); cut-outs let camera, bounce and shadow rays
+// through (scene/cutout_filter.h); a flat normal map changes nothing (materials/normal_map.h).
+// On Lambert's polygon case (test_support.h): receiver radiance rho E / pi at depth 1.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "integrator/path_integrator.h"
+#include "scene/scene.h"
+#include "test_support.h"
+#include "util/constants.h"
+
+using namespace strata;
+
+namespace {
+
+constexpr float kRho = 0.5f;
+
+Material receiver() {
+    Material m;
+    m.diffuse = glm::vec3(kRho);
+    return m;
+}
+
+// The square's corners (4 to 7) mapped onto the unit UV square, u = x + 1/2, v = y + 1/2.
+void mapSquareUvs(MeshData& mesh) {
+    mesh.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    mesh.triangleUvs = {kNoUvs, kNoUvs, {0, 1, 2}, {0, 2, 3}};
+}
+
+// A blocker z = 1/2 over [-1, 1]^2 between receiver and square, facing down, of `coverage`:
+// its UVs u = (x + 1) / 2, v = (y + 1) / 2.
+void addBlocker(MeshData& mesh, std::shared_ptr<const Texture> coverage) {
+    Material blocker;
+    blocker.diffuse = glm::vec3(0.5f);
+    blocker.textures.coverage = std::move(coverage);
+    mesh.materials.push_back(blocker);
+    const auto material = static_cast<uint32_t>(mesh.materials.size() - 1);
+    test::addQuad(mesh, {-1, -1, 0.5f}, {-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, material);
+    const auto base = static_cast<uint32_t>(mesh.uvs.size());
+    mesh.uvs.insert(mesh.uvs.end(), {{0, 0}, {0, 1}, {1, 1}, {1, 0}});
+    mesh.triangleUvs.push_back({base, base + 1, base + 2});
+    mesh.triangleUvs.push_back({base, base + 2, base + 3});
+}
+
+test::MeanEstimate receiverRadiance(const Scene& scene, bool nee) {
+    PathIntegratorSettings settings;
+    settings.depth = 1;
+    settings.nextEventEstimation = nee;
+    const PathIntegrator integrator(scene, settings);
+    return test::estimateMean(test::pixelEstimates(integrator, test::rayToOrigin({0.3f, 0.2f, 0.4f}), 64, 40, 11));
+}
+
+void checkRadiance(const test::MeanEstimate& estimate, double expected) {
+    INFO("estimate " << estimate.mean << " +- " << estimate.standardError << ", expected " << expected);
+    CHECK(std::abs(estimate.mean - expected) < 5.0 * estimate.standardError + 1e-9);
+}
+
+}  // namespace
+
+TEST_CASE("a textured emitter lights by its texture, with and without light sampling") {
+    MeshData mesh = test::lambertSquareMesh(receiver());
+    mapSquareUvs(mesh);
+    // Two texels 0 and 1 across u: bilinear with repeat makes f(u) + f(1 - u) = 1, so by the
+    // square's symmetry about x = 0 the irradiance is half the untextured one.
+    mesh.materials[1].textures.emission = std::make_shared<Texture>(2, 1, 1, std::vector<float>{0.0f, 1.0f});
+    const Scene scene(std::move(mesh));
+    const double expected = kRho * 0.5 * test::kLambertSquareIrradiance / kPi;
+    checkRadiance(receiverRadiance(scene, true), expected);
+    checkRadiance(receiverRadiance(scene, false), expected);
+}
+
+TEST_CASE("cut-out geometry lets shadow and bounce rays through, opaque texels block them") {
+    const double unblocked = kRho * test::kLambertSquareIrradiance / kPi;
+    for (const bool nee : {true, false}) {
+        MeshData open = test::lambertSquareMesh(receiver());
+        mapSquareUvs(open);
+        addBlocker(open, std::make_shared<Texture>(1, 1, 1, std::vector<float>{0.0f}));
+        const Scene openScene(std::move(open));
+        checkRadiance(receiverRadiance(openScene, nee), unblocked);
+
+        MeshData closed = test::lambertSquareMesh(receiver());
+        mapSquareUvs(closed);
+        addBlocker(closed, std::make_shared<Texture>(1, 1, 1, std::vector<float>{1.0f}));
+        const Scene closedScene(std::move(closed));
+        CHECK(receiverRadiance(closedScene, nee).mean == 0.0);
+    }
+}
+
+TEST_CASE("a camera ray through a cut-out texel sees what is behind it") {
+    MeshData mesh = test::lambertSquareMesh(receiver());
+    mapSquareUvs(mesh);
+    // Coverage 0 on the blocker's left half (u < 1/2, x < 0), 1 on its right; nearest texel
+    // centres are at x = -1/2 and +1/2, where bilinear filtering returns them exactly.
+    addBlocker(mesh, std::make_shared<Texture>(2, 1, 1, std::vector<float>{0.0f, 1.0f}));
+    const Scene scene(std::move(mesh));
+    const Ray throughHole{{-0.5f, 0.0f, 0.8f}, {0.0f, 0.0f, -1.0f}};
+    const auto hit = scene.intersect(throughHole);
+    REQUIRE(hit);
+    CHECK(scene.triangle(hit->triangle).material == 0);  // the receiver
+    CHECK(hit->t == doctest::Approx(0.8));
+    const Ray ontoBlocker{{0.5f, 0.0f, 0.8f}, {0.0f, 0.0f, -1.0f}};
+    const auto blocked = scene.intersect(ontoBlocker);
+    REQUIRE(blocked);
+    CHECK(scene.triangle(blocked->triangle).material == 2);
+    CHECK(blocked->t == doctest::Approx(0.3));
+    // Shadow rays likewise.
+    CHECK_FALSE(scene.occluded(Ray{{-0.5f, 0.0f, 0.1f}, {0.0f, 0.0f, 1.0f}}, 0.8f));
+    CHECK(scene.occluded(Ray{{0.5f, 0.0f, 0.1f}, {0.0f, 0.0f, 1.0f}}, 0.8f));
+}
+
+TEST_CASE("a flat normal map (0.5, 0.5, 1) renders the same as none") {
+    const auto render = [](bool mapped) {
+        MeshData mesh = test::lambertSquareMesh(receiver());
+        mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        mesh.triangleUvs = {{0, 1, 2}, {0, 2, 3}, kNoUvs, kNoUvs};
+        if (mapped) {
+            mesh.materials[0].textures.normal =
+                std::make_shared<Texture>(1, 1, 3, std::vector<float>{0.5f, 0.5f, 1.0f});
+        }
+        const Scene scene(std::move(mesh));
+        PathIntegratorSettings settings;
+        settings.depth = 2;
+        settings.nextEventEstimation = true;
+        return test::pixelEstimates(PathIntegrator(scene, settings), test::rayToOrigin({0.3f, 0.2f, 0.4f}), 8, 4, 3);
+    };
+    CHECK(render(true) == render(false));
+}
+
+TEST_CASE("a tilted normal map tilts the shading normal toward +u") {
+    MeshData mesh = test::lambertSquareMesh(receiver());
+    mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    mesh.triangleUvs = {{0, 1, 2}, {0, 2, 3}, kNoUvs, kNoUvs};
+    // (x, y, z) = (0.6, 0, 0.8) encoded as * 0.5 + 0.5.
+    mesh.materials[0].textures.normal = std::make_shared<Texture>(1, 1, 3, std::vector<float>{0.8f, 0.5f, 0.9f});
+    const Scene scene(std::move(mesh));
+    const auto hit = scene.intersect(Ray{{0.1f, 0.1f, 0.5f}, {0.0f, 0.0f, -1.0f}});
+    REQUIRE(hit);
+    const SurfaceHit surface = scene.surface(*hit);
+    CHECK(surface.smooth);
+    CHECK(surface.shadingNormal.x == doctest::Approx(0.6));
+    CHECK(surface.shadingNormal.y == doctest::Approx(0.0));
+    CHECK(surface.shadingNormal.z == doctest::Approx(0.8));
+}

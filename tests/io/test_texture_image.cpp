@@ -1,0 +1,74 @@
+// Texture decoding (io/texture_image.h): the sRGB table against the curve, 8-bit colour and data
+// textures, and malformed bytes refused with the file's name.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+#include <stb_image_write.h>
+
+#include "io/image_io.h"
+#include "io/texture_image.h"
+#include "test_support.h"
+#include "util/error.h"
+
+using namespace strata;
+
+namespace {
+double srgbCurve(int code) {
+    const double c = code / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A PNG of `channels` 8-bit channels in memory.
+std::string pngBytes(int width, int height, int channels, const std::vector<unsigned char>& pixels) {
+    std::string out;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+        },
+        &out, width, height, channels, pixels.data(), width * channels);
+    return out;
+}
+}  // namespace
+
+TEST_CASE("the sRGB table is the exact curve") {
+    const auto& table = srgbDecodingTable();
+    for (int code : {0, 1, 10, 128, 255}) {
+        CHECK(table[static_cast<size_t>(code)] == static_cast<float>(srgbCurve(code)));
+    }
+    CHECK(table[0] == 0.0f);
+    CHECK(table[255] == 1.0f);
+    CHECK(table[10] == static_cast<float>(10.0 / 255.0 / 12.92));  // the linear segment
+}
+
+TEST_CASE("an 8-bit colour texture decodes its RGB as sRGB and its alpha linearly; data stays linear") {
+    const std::string png = pngBytes(2, 1, 4, {10, 128, 255, 128, 0, 1, 2, 255});
+    const Texture colour = decodeTexture(png, "a.png", TextureEncoding::Colour);
+    CHECK(colour.width() == 2);
+    CHECK(colour.channels() == 4);
+    const auto& srgb = srgbDecodingTable();
+    CHECK(colour.texel(0, 0) == glm::vec4(srgb[10], srgb[128], srgb[255], 128.0f / 255.0f));
+    const Texture data = decodeTexture(png, "a.png", TextureEncoding::Data);
+    CHECK(data.texel(0, 0) == glm::vec4(10.0f / 255.0f, 128.0f / 255.0f, 1.0f, 128.0f / 255.0f));
+    CHECK(data.texel(1, 0) == glm::vec4(0.0f, 1.0f / 255.0f, 2.0f / 255.0f, 1.0f));
+}
+
+TEST_CASE("an EXR texture is read through OpenEXR as linear values") {
+    const test::ScratchDir dir = test::scratchDir("texture_exr");
+    Image image{2, 1, {glm::vec3(0.25f, 2.0f, 0.5f), glm::vec3(1.0f)}};
+    writeImage(dir / "t.exr", image);
+    const Texture t = decodeTexture(test::fileBytes(dir / "t.exr"), "t.exr", TextureEncoding::Colour);
+    CHECK(t.texel(0, 0) == glm::vec4(0.25f, 2.0f, 0.5f, 1.0f));
+}
+
+TEST_CASE("bytes no decoder reads are refused with the file's name") {
+    for (const std::string bytes : {std::string(), std::string("not an image"), std::string("\x89PNG\r\n\x1a\n\0\0", 10)}) {
+        try {
+            decodeTexture(bytes, "bad.png", TextureEncoding::Colour);
+            FAIL("decoded");
+        } catch (const Error& e) {
+            CHECK(std::string(e.what()).rfind("bad.png: cannot decode the texture", 0) == 0);
+        }
+    }
+}

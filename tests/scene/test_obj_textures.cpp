@@ -1,0 +1,115 @@
+// OBJ/MTL textures end to end (scene/obj_loader.h): files written by the test, read into a
+// bundle as `strata render` reads them, parsed and traced.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+#include <vector>
+#include <stb_image_write.h>
+
+#include "io/texture_image.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+
+using namespace strata;
+
+namespace {
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+void writePng(const std::filesystem::path& path, int width, int height, int channels,
+              const std::vector<unsigned char>& pixels) {
+    std::filesystem::create_directories(path.parent_path());
+    REQUIRE(stbi_write_png(path.string().c_str(), width, height, channels, pixels.data(), width * channels));
+}
+
+// The unit quad z = 0 facing +z, UVs = (x, y), with material `material` of mtl/quad.mtl.
+const char* const kQuadObj =
+    "mtllib mtl/quad.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "usemtl quad\nf 1/1 2/2 3/3 4/4\n";
+
+// 2 x 2 RGB, top row red, green; bottom row blue, white (top row = v near 1).
+const std::vector<unsigned char> kQuadrants{255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+
+bool hasWarning(const LoadedScene& scene, const std::string& part) {
+    return std::any_of(scene.report.warnings.begin(), scene.report.warnings.end(),
+                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad; paths resolve from the MTL's folder") {
+    const test::ScratchDir dir = test::scratchDir("obj_textures");
+    writeFile(dir / "quad.obj", kQuadObj);
+    // Windows separators and spaces, relative to the MTL's folder.
+    writeFile(dir / "mtl" / "quad.mtl",
+              "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Kd -bm 1 -blendu on tex dir\\quad tex.png\n"
+              "map_Ke .\\tex dir\\quad tex.png\n");
+    writePng(dir / "mtl" / "tex dir" / "quad tex.png", 2, 2, 3, kQuadrants);
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings.empty());
+    REQUIRE(loaded.bundle.find("mtl/tex dir/quad tex.png"));
+    const Scene& scene = loaded.scene;
+
+    // Depth 0: a camera ray reads Ke times the texel exactly at each quadrant's centre.
+    PathIntegratorSettings settings;
+    settings.depth = 0;
+    const PathIntegrator integrator(scene, settings);
+    const auto seen = [&](float x, float y) {
+        uint64_t rays = 0;
+        return integrator.radiance(Ray{{x, y, 1.0f}, {0.0f, 0.0f, -1.0f}}, PathSamples(1, 0, 0, 0), rays);
+    };
+    CHECK(seen(0.25f, 0.75f) == glm::vec3(2.0f, 0.0f, 0.0f));  // top left: red
+    CHECK(seen(0.75f, 0.75f) == glm::vec3(0.0f, 2.0f, 0.0f));
+    CHECK(seen(0.25f, 0.25f) == glm::vec3(0.0f, 0.0f, 2.0f));
+    CHECK(seen(0.75f, 0.25f) == glm::vec3(2.0f));
+    // The BSDF at each: Kd times the texel.
+    const auto diffuseAt = [&](glm::vec2 uv) {
+        return scene.materials().bsdf(0, uv).tabulatedAlbedo({0.0f, 0.0f, 1.0f});
+    };
+    CHECK(diffuseAt({0.25f, 0.75f}) == glm::vec3(0.5f, 0.0f, 0.0f));
+    CHECK(diffuseAt({0.75f, 0.25f}) == glm::vec3(0.5f));
+}
+
+TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps its constants") {
+    const test::ScratchDir dir = test::scratchDir("obj_bad_textures");
+    writeFile(dir / "quad.obj", kQuadObj);
+    writeFile(dir / "mtl" / "quad.mtl",
+              "newmtl quad\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ke broken.png\nbump height.png\n"
+              "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\n");
+    writeFile(dir / "mtl" / "broken.png", "\x89PNG\r\n\x1a\nthis is not a PNG");
+    writePng(dir / "mtl" / "height.png", 1, 1, 3, {128, 128, 128});
+    writePng(dir / "mtl" / "alpha.png", 1, 1, 1, {255});
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(hasWarning(loaded, "quad.mtl:3: map_Kd: texture file 'mtl/missing.png' is missing; using the factor alone"));
+    CHECK(hasWarning(loaded, "quad.mtl:4: map_Ke: "));
+    CHECK(hasWarning(loaded, "broken.png: cannot decode the texture"));
+    CHECK(hasWarning(loaded, "quad.mtl:5: bump: 'height.png' holds heights, not normals"));
+    CHECK(hasWarning(loaded, "quad.mtl:6: map_d: the options -o and -s are not applied"));
+    CHECK(hasWarning(loaded, "quad.mtl:6: map_d: unknown option '-zz' skipped"));
+    CHECK(hasWarning(loaded, "quad.mtl:7: norm names no file; ignored"));
+    const Material& m = loaded.scene.mesh().materials[0];
+    CHECK(!m.textures.colour);
+    CHECK(!m.textures.emission);
+    CHECK(!m.textures.normal);
+    CHECK(m.textures.coverage);  // the one usable texture
+    CHECK(m.emission == glm::vec3(0.0f));
+}
+
+TEST_CASE("a bump map whose values are normals is read as a normal map") {
+    const test::ScratchDir dir = test::scratchDir("obj_bump_normals");
+    writeFile(dir / "quad.obj", kQuadObj);
+    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Bump -bm 0.5 n.png\n");
+    writePng(dir / "mtl" / "n.png", 1, 1, 3, {128, 128, 255});
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings.empty());
+    const Material& m = loaded.scene.mesh().materials[0];
+    REQUIRE(m.textures.normal);
+    CHECK(m.textures.normalScale == 0.5f);
+}
