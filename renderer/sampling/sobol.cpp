@@ -44,19 +44,50 @@ uint32_t sobolSecondCoordinate(uint32_t index) {
     return result;
 }
 
+uint32_t sobolThirdCoordinate(uint32_t index) {
+    // Bratley & Fox's recurrence for a degree-2 polynomial with a_1 = 1:
+    // v_k = v_{k-1} ^ v_{k-2} ^ (v_{k-2} >> 2), from v_1 = 1/2 and v_2 = 3/4 (m = 1, 3).
+    uint32_t result = 0;
+    uint32_t older = 1u << 31;
+    uint32_t newer = 3u << 30;
+    if (index & 1u) result ^= older;
+    for (index >>= 1; index != 0; index >>= 1) {
+        if (index & 1u) result ^= newer;
+        const uint32_t next = newer ^ older ^ (older >> 2);
+        older = newer;
+        newer = next;
+    }
+    return result;
+}
+
 uint32_t owenScramble(uint32_t value, uint32_t seed) {
     return reverseBits(scrambleUpward(reverseBits(value), seed));
 }
 
+// Owen-scrambling the index maps each aligned block of 2^m indices onto an aligned block of 2^m
+// (its high bits depend only on high bits), and every aligned block of a (t,s)-sequence is a
+// (t,m,s)-net: the shuffled prefixes stay nets. The stream's seeds: the index scramble in the low
+// 32 bits of the first hash, the first coordinate's in its high bits, the others' in the next.
 glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey) {
     const uint64_t seeds = mixBits(streamKey);
     const uint64_t moreSeeds = mixBits(seeds);
-    // Owen-scrambling the index maps each aligned block of 2^m indices onto an aligned block of
-    // 2^m (its high bits depend only on high bits), and every aligned block of a (0,2)-sequence
-    // is a (0,m,2)-net: the shuffled prefixes stay nets.
     const uint32_t shuffled = owenScramble(index, static_cast<uint32_t>(seeds));
     return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), static_cast<uint32_t>(seeds >> 32))),
             toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), static_cast<uint32_t>(moreSeeds)))};
+}
+
+float scrambledSobolValue(uint32_t index, uint64_t streamKey) {
+    const uint64_t seeds = mixBits(streamKey);
+    const uint32_t shuffled = owenScramble(index, static_cast<uint32_t>(seeds));
+    return toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), static_cast<uint32_t>(seeds >> 32)));
+}
+
+glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey) {
+    const glm::vec2 firstTwo = scrambledSobolPoint(index, streamKey);
+    const uint64_t seeds = mixBits(streamKey);
+    const uint32_t shuffled = owenScramble(index, static_cast<uint32_t>(seeds));
+    const auto thirdSeed = static_cast<uint32_t>(mixBits(seeds) >> 32);
+    return {firstTwo, toUnitFloat(owenScramble(sobolThirdCoordinate(shuffled), thirdSeed))};
 }
 
 }  // namespace strata

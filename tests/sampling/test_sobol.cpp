@@ -58,6 +58,59 @@ TEST_CASE("sobol: every aligned block of 2^m points is a (0,m,2)-net, scrambled 
     CHECK_FALSE(isNet(random, 4));
 }
 
+TEST_CASE("sobol: the third dimension has Joe and Kuo's direction numbers and makes (1,m,3)-nets") {
+    // Direction numbers v_k = m_k / 2^k of their table's third dimension (m = 1, 3, 3, 9, 29).
+    const uint32_t directions[] = {0x80000000u, 0xc0000000u, 0x60000000u, 0x90000000u, 0xe8000000u};
+    for (int k = 0; k < 5; ++k) CHECK(sobolThirdCoordinate(1u << k) == directions[k]);
+    // Every aligned block of 2^m points, scrambled or not, has 2 points in each elementary box
+    // of volume 2^(1-m).
+    for (int m = 1; m <= 9; ++m) {
+        for (uint32_t block : {0u, 3u}) {
+            for (bool scrambled : {false, true}) {
+                std::vector<glm::dvec3> points;
+                for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
+                    const glm::vec3 p = scrambledSobolPoint3(i, 0xabcdefu + block);
+                    points.push_back(scrambled ? glm::dvec3(p)
+                                               : glm::dvec3(sobolFirstCoordinate(i), sobolSecondCoordinate(i),
+                                                            sobolThirdCoordinate(i)) * 0x1p-32);
+                }
+                bool net = true;
+                for (int a = 0; a <= m - 1; ++a) {
+                    for (int b = 0; a + b <= m - 1; ++b) {
+                        const int c = m - 1 - a - b;
+                        std::vector<int> boxes(size_t{1} << (m - 1), 0);
+                        for (const auto& p : points) {
+                            const auto x = static_cast<size_t>(std::floor(p.x * std::ldexp(1.0, a)));
+                            const auto y = static_cast<size_t>(std::floor(p.y * std::ldexp(1.0, b)));
+                            const auto z = static_cast<size_t>(std::floor(p.z * std::ldexp(1.0, c)));
+                            net = net && ++boxes[(((x << b) | y) << c) | z] <= 2;
+                        }
+                    }
+                }
+                INFO("m " << m << " block " << block << (scrambled ? " scrambled" : " plain"));
+                CHECK(net);
+            }
+        }
+    }
+}
+
+TEST_CASE("sobol: a scrambled value sequence puts one of 2^m values in each interval of 2^-m") {
+    for (int m = 0; m <= 12; ++m) {
+        for (uint32_t block : {0u, 7u}) {
+            std::vector<int> counts(size_t{1} << m, 0);
+            bool stratified = true;
+            for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
+                const float u = scrambledSobolValue(i, 0x51u + block);
+                stratified = stratified && ++counts[static_cast<size_t>(std::ldexp(u, m))] == 1;
+                // The first coordinate of the 2D point with the same stream: one sequence.
+                stratified = stratified && u == scrambledSobolPoint(i, 0x51u + block).x;
+            }
+            INFO("m " << m << " block " << block);
+            CHECK(stratified);
+        }
+    }
+}
+
 TEST_CASE("sobol: Owen scrambling keeps leading digits together and is a bijection") {
     // Values that share their t leading bits still share them after scrambling (nested), and
     // distinct values stay distinct.
