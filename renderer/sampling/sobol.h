@@ -1,7 +1,8 @@
 #pragma once
-// An Owen-scrambled Sobol' (0,2)-sequence in base 2, for stratifying each of the 24 strata
-// progressively (`strata24-qmc`, the paper's future work: uniform separation combined with
-// low-discrepancy points).
+// Owen-scrambled Sobol' sequences in base 2: the (0,2)-sequence that stratifies each of the 24
+// strata progressively (`strata24-qmc`, the paper's future work: uniform separation combined with
+// low-discrepancy points), and the 1D, 2D and 3D streams that stratify a path's other numbers over
+// its pixel (path_samples.h).
 //
 // The first two Sobol' dimensions form a (0,2)-sequence: for every m, each aligned block of 2^m
 // consecutive points is a (0,m,2)-net, i.e. every dyadic box of area 2^-m holds exactly one
@@ -11,8 +12,9 @@
 // every point alone is an unbiased sample. The scramble here is the hash-based one of Burley 2020
 // ("Practical Hash-based Owen Scrambling", JCGT 9(4)), which also shuffles the order of the
 // points by Owen-scrambling the index: that decorrelates streams that share an index (one
-// stream per pixel, bounce and stratum, all indexed by the pass) while each aligned block of
-// 2^m consecutive indices still maps to a (0,m,2)-net.
+// stream per pixel, bounce and stratum, all indexed by the pass; one per pixel, value and bounce,
+// indexed by the path number) while each aligned block of 2^m consecutive indices still maps to
+// a (0,m,2)-net.
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
