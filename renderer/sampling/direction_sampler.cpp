@@ -7,11 +7,12 @@
 
 namespace strata {
 namespace {
-constexpr NameTable<SamplerKind, 6> kSamplers{{{{"uniform", SamplerKind::Uniform},
+constexpr NameTable<SamplerKind, 7> kSamplers{{{{"uniform", SamplerKind::Uniform},
                                                 {"strata24", SamplerKind::Strata24},
                                                 {"cosine", SamplerKind::Cosine},
                                                 {"strata24-cosine", SamplerKind::Strata24Cosine},
                                                 {"strata24-qmc", SamplerKind::Strata24Qmc},
+                                                {"strata24-cosine-qmc", SamplerKind::Strata24CosineQmc},
                                                 {"bsdf", SamplerKind::Bsdf}}}};
 
 // A direction from a hemisphere sampler whose cos / pdf is known in closed form: the weight is
@@ -30,7 +31,7 @@ std::string samplerNames() { return kSamplers.joined(); }
 
 bool stratifies(SamplerKind kind) {
     return kind == SamplerKind::Strata24 || kind == SamplerKind::Strata24Cosine ||
-           kind == SamplerKind::Strata24Qmc;
+           kind == SamplerKind::Strata24Qmc || kind == SamplerKind::Strata24CosineQmc;
 }
 
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
@@ -52,9 +53,12 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
             const glm::vec3 d = sampleCosineHemisphere(samples.bouncePoint(bounce));
             return hemisphereSample(bsdf, wo, d, kPi, -1);
         }
-        case SamplerKind::Strata24Cosine: {
+        case SamplerKind::Strata24Cosine:
+        case SamplerKind::Strata24CosineQmc: {
             const int id = samples.stratum(bounce);
-            const glm::vec3 d = sampleStratumCosine(id, samples.bouncePoint(bounce));
+            const glm::vec2 u = kind == SamplerKind::Strata24Cosine ? samples.bouncePoint(bounce)
+                                                                    : samples.stratumSequencePoint(bounce);
+            const glm::vec3 d = sampleStratumCosine(id, u);
             const auto cosOverPdf =
                 static_cast<float>(kStrataCount * stratumProjectedSolidAngle(id));
             return hemisphereSample(bsdf, wo, d, cosOverPdf, id);
@@ -81,6 +85,7 @@ float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& w
         case SamplerKind::Strata24Qmc: return 1.0f / kHemisphereSolidAngle;
         case SamplerKind::Cosine: return cosineHemispherePdf(wi);
         case SamplerKind::Strata24Cosine:
+        case SamplerKind::Strata24CosineQmc:
             return wi.z / static_cast<float>(kStrataCount *
                                              stratumProjectedSolidAngle(classifyStratum(wi)));
         case SamplerKind::Bsdf: return bsdf.pdf(wo, wi);

@@ -15,6 +15,8 @@
 //   strata24-qmc    - strata24 with each stratum's points taken from its own Owen-scrambled
 //                     Sobol' stream (PathSamples::stratumSequencePoint), so successive passes
 //                     refine every stratum (the paper's future work);
+//   strata24-cosine-qmc - strata24-cosine with the points of strata24-qmc: cosine-weighted inside
+//                     each stratum, each stratum refined by its Sobol' stream;
 //   bsdf            - importance sampling of the whole material (material.h: cosine for the
 //                     Lambertian layer, GGX visible normals for the specular one).
 // All are unbiased for every path, so a partial pass is an unbiased estimate.
@@ -28,7 +30,7 @@
 
 namespace strata {
 
-enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Bsdf };
+enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Strata24CosineQmc, Bsdf };
 
 std::optional<SamplerKind> parseSamplerKind(std::string_view name);
 std::string_view samplerName(SamplerKind kind);

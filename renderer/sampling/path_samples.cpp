@@ -2,23 +2,25 @@
 
 #include "sampling/random.h"
 #include "sampling/sobol.h"
+#include "sampling/strata24.h"
 
 namespace strata {
 namespace {
-// Dimensions: 0 the pixel jitter, 1 + bounce the bounce points; the other per-bounce values live
-// at bounce + tag with tags above any depth the CLI allows, so no two dimensions coincide.
-constexpr uint64_t kPixelJitterDimension = 0;
+// Dimensions of the plain hashed points: 1 + bounce for the bounce points.
 constexpr uint64_t kFirstBounceDimension = 1;
-constexpr uint64_t kLobeDimension = 1ull << 40;
-constexpr uint64_t kLightDimension = 2ull << 40;
-constexpr uint64_t kLightPointDimension = 3ull << 40;
-constexpr uint64_t kRouletteDimension = 4ull << 40;
-constexpr uint64_t kSequenceTag = 0x736f626f6cull;  // "sobol"
+// Tags of the pixel's low-discrepancy streams (and of strata24-qmc's per-stratum streams): each
+// value, folded in with the bounce, keys a stream of its own.
+constexpr uint64_t kPixelJitterTag = 0x6a6974746572ull;  // "jitter"
+constexpr uint64_t kLightTag = 0x6c69676874ull;          // "light"
+constexpr uint64_t kLobeTag = 0x6c6f6265ull;             // "lobe"
+constexpr uint64_t kRouletteTag = 0x726f756c6574ull;     // "roulet"
+constexpr uint64_t kSequenceTag = 0x736f626f6cull;       // "sobol"
 }  // namespace
 
 PathSamples::PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step)
     : pixelKey_(hashCombine(mixBits(seed), pixel)),
       pathKey_(hashCombine(hashCombine(pixelKey_, pass), static_cast<uint64_t>(step))),
+      pixelIndex_(pass * static_cast<uint32_t>(kStrataCount) + static_cast<uint32_t>(step)),
       pass_(pass),
       step_(step) {}
 
@@ -28,7 +30,13 @@ glm::vec2 PathSamples::point(uint64_t dimension) const {
     return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
-glm::vec2 PathSamples::pixelJitter() const { return point(kPixelJitterDimension); }
+uint64_t PathSamples::streamKey(uint64_t tag, int bounce) const {
+    return hashCombine(hashCombine(pixelKey_, tag), static_cast<uint64_t>(bounce));
+}
+
+glm::vec2 PathSamples::pixelJitter() const {
+    return scrambledSobolPoint(pixelIndex_, hashCombine(pixelKey_, kPixelJitterTag));
+}
 
 glm::vec2 PathSamples::bouncePoint(int bounce) const {
     return point(kFirstBounceDimension + static_cast<uint64_t>(bounce));
@@ -40,24 +48,23 @@ int PathSamples::stratum(int bounce) const {
 }
 
 glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {
-    const uint64_t stream = hashCombine(
-        hashCombine(hashCombine(pixelKey_, kSequenceTag), static_cast<uint64_t>(bounce)),
-        static_cast<uint64_t>(stratum(bounce)));
+    const uint64_t stream = hashCombine(streamKey(kSequenceTag, bounce), static_cast<uint64_t>(stratum(bounce)));
     return scrambledSobolPoint(pass_, stream);
 }
 
 float PathSamples::lobeChoice(int bounce) const {
-    return point(kLobeDimension + static_cast<uint64_t>(bounce)).x;
+    return scrambledSobolValue(pixelIndex_, streamKey(kLobeTag, bounce));
 }
 
 float PathSamples::roulette(int bounce) const {
-    return point(kRouletteDimension + static_cast<uint64_t>(bounce)).x;
+    return scrambledSobolValue(pixelIndex_, streamKey(kRouletteTag, bounce));
 }
 
 glm::vec3 PathSamples::lightSample(int bounce) const {
-    const glm::vec2 choice = point(kLightDimension + static_cast<uint64_t>(bounce));
-    const glm::vec2 position = point(kLightPointDimension + static_cast<uint64_t>(bounce));
-    return {choice.x, position.x, position.y};
+    // The point on the emitter takes the (0,2)-sequence pair, the emitter choice the third
+    // coordinate: jointly a (1,3)-sequence, so the choice and the point are stratified together.
+    const glm::vec3 p = scrambledSobolPoint3(pixelIndex_, streamKey(kLightTag, bounce));
+    return {p.z, p.x, p.y};
 }
 
 }  // namespace strata

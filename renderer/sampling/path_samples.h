@@ -1,7 +1,18 @@
 #pragma once
 // The random numbers of one path: step `step` (0..23) of pass `pass` at one pixel. Every value is
-// a hash of (seed, pixel, pass, step, bounce, dimension) (see random.h), which is what makes
-// renders bit-identical for any thread count.
+// a pure function of (seed, pixel, pass, step, bounce, dimension), which is what makes renders
+// bit-identical for any thread count.
+//
+// The pixel jitter, the light sample, the lobe choice and the roulette decision are stratified
+// over the pixel's paths: the pixel's path number n = 24 pass + step indexes a low-discrepancy
+// stream (sobol.h) of its own for each of these values at each bounce, Owen-scrambled with seeds
+// from (seed, pixel, value, bounce), and index-shuffled too, so that two streams pair their points
+// at random ("padding", as pbrt-v4's PaddedSobolSampler and Cycles' Sobol-Burley do). Each value
+// alone is then stratified over the pixel's first n paths (a (0,2)-sequence in 2D), while the values
+// stay independent of each other and of the direction's stratum. Every single value is uniform, so
+// every path is unbiased. The direction samplers' own points (bouncePoint, stratumSequencePoint)
+// keep their meanings: the paper's estimators are compared on the same pixel, light and roulette
+// numbers.
 #include <cstdint>
 #include <optional>
 #include <glm/vec2.hpp>
@@ -15,7 +26,7 @@ class PathSamples {
 public:
     PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step);
 
-    // Sub-pixel position of the camera ray, uniform on [0,1)^2.
+    // Sub-pixel position of the camera ray, uniform on [0,1)^2; a (0,2)-sequence over the pixel.
     glm::vec2 pixelJitter() const;
     // The point in [0,1)^2 that the direction sampler maps onto the hemisphere (or onto a stratum)
     // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
@@ -27,11 +38,13 @@ public:
     glm::vec2 stratumSequencePoint(int bounce) const;
     // The stratum this path takes at `bounce` (stratum_schedule.h).
     int stratum(int bounce) const;
-    // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`.
+    // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`;
+    // a scrambled van der Corput sequence over the pixel.
     float lobeChoice(int bounce) const;
-    // Uniform on [0,1): whether Russian roulette lets the path go on after `bounce`.
+    // Uniform on [0,1): whether Russian roulette lets the path go on after `bounce`; likewise.
     float roulette(int bounce) const;
-    // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it.
+    // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it;
+    // jointly the first three Sobol' dimensions over the pixel.
     glm::vec3 lightSample(int bounce) const;
 
     uint64_t pixelKey() const { return pixelKey_; }
@@ -39,10 +52,14 @@ public:
     int step() const { return step_; }
 
 private:
+    // A uniform random point of the path: a hash of the path's key and `dimension`.
     glm::vec2 point(uint64_t dimension) const;
+    // The key of the pixel's stream for the value `tag` at `bounce`.
+    uint64_t streamKey(uint64_t tag, int bounce) const;
 
     uint64_t pixelKey_;
     uint64_t pathKey_;
+    uint32_t pixelIndex_;  // the path's number n = 24 pass + step within the pixel's streams
     uint32_t pass_;
     int step_;
     // The path's strata, worked out on the first stratum() call rather than at every bounce

@@ -1,5 +1,7 @@
 #include "sampling/sobol.h"
 
+#include <array>
+
 #include "sampling/random.h"
 
 namespace strata {
@@ -27,36 +29,108 @@ uint32_t scrambleUpward(uint32_t x, uint32_t seed) {
     return x;
 }
 
+// A generator matrix over GF(2), as the images of the 32 index bits, and its product with an index
+// by byte: result = XOR over the index's 4 bytes of the image of that byte. Four table lookups
+// rather than a loop over the index bits, whose data-dependent branch a shuffled index (random
+// high bits) mispredicted at every other bit: the path tracer asks for several points per bounce.
+using GeneratorColumns = std::array<uint32_t, 32>;
+using ByteImages = std::array<std::array<uint32_t, 256>, 4>;
+
+constexpr ByteImages byteImages(const GeneratorColumns& columns) {
+    ByteImages images{};
+    for (int byte = 0; byte < 4; ++byte) {
+        for (uint32_t value = 0; value < 256; ++value) {
+            uint32_t image = 0;
+            for (int bit = 0; bit < 8; ++bit) {
+                if ((value >> bit) & 1u) image ^= columns[8 * byte + bit];
+            }
+            images[byte][value] = image;
+        }
+    }
+    return images;
+}
+
+// Sobol's second dimension: column j is row j of Pascal's triangle mod 2, read from the top bit
+// down: it starts at 1 << 31 and the next is v ^ (v >> 1).
+constexpr GeneratorColumns secondDimensionColumns() {
+    GeneratorColumns columns{};
+    uint32_t v = 1u << 31;
+    for (uint32_t& column : columns) {
+        column = v;
+        v ^= v >> 1;
+    }
+    return columns;
+}
+
+// Sobol's third dimension: Bratley & Fox's recurrence for the degree-2 polynomial x^2 + x + 1,
+// v_k = v_{k-1} ^ v_{k-2} ^ (v_{k-2} >> 2), from v_1 = 1/2 and v_2 = 3/4 (m = 1, 3).
+constexpr GeneratorColumns thirdDimensionColumns() {
+    GeneratorColumns columns{};
+    columns[0] = 1u << 31;
+    columns[1] = 3u << 30;
+    for (int k = 2; k < 32; ++k) columns[k] = columns[k - 1] ^ columns[k - 2] ^ (columns[k - 2] >> 2);
+    return columns;
+}
+
+constexpr ByteImages kSecondDimension = byteImages(secondDimensionColumns());
+constexpr ByteImages kThirdDimension = byteImages(thirdDimensionColumns());
+
+uint32_t multiply(const ByteImages& images, uint32_t index) {
+    return images[0][index & 0xffu] ^ images[1][(index >> 8) & 0xffu] ^
+           images[2][(index >> 16) & 0xffu] ^ images[3][index >> 24];
+}
+
 // 24 significant bits to a float in [0, 1): never rounds up to 1.
 float toUnitFloat(uint32_t fixedPoint) { return static_cast<float>(fixedPoint >> 8) * 0x1p-24f; }
+
+// A stream's four 32-bit scramble seeds, two from each of two hashes of its key: the index
+// shuffle's and one per coordinate.
+struct StreamSeeds {
+    explicit StreamSeeds(uint64_t streamKey)
+        : first(mixBits(streamKey)), second(mixBits(first)) {}
+    uint32_t index() const { return static_cast<uint32_t>(first); }
+    uint32_t coordinate(int dimension) const {
+        return static_cast<uint32_t>(dimension == 0 ? first >> 32 : dimension == 1 ? second : second >> 32);
+    }
+    uint64_t first;
+    uint64_t second;
+};
 
 }  // namespace
 
 uint32_t sobolFirstCoordinate(uint32_t index) { return reverseBits(index); }
 
-uint32_t sobolSecondCoordinate(uint32_t index) {
-    // Column j of the generator matrix is row j of Pascal's triangle mod 2, read from the top
-    // bit down: it starts at 1 << 31 and the next is v ^ (v >> 1).
-    uint32_t result = 0;
-    for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
-        if (index & 1u) result ^= v;
-    }
-    return result;
-}
+uint32_t sobolSecondCoordinate(uint32_t index) { return multiply(kSecondDimension, index); }
+
+uint32_t sobolThirdCoordinate(uint32_t index) { return multiply(kThirdDimension, index); }
 
 uint32_t owenScramble(uint32_t value, uint32_t seed) {
     return reverseBits(scrambleUpward(reverseBits(value), seed));
 }
 
+// Owen-scrambling the index maps each aligned block of 2^m indices onto an aligned block of 2^m
+// (its high bits depend only on high bits), and every aligned block of a (t,s)-sequence is a
+// (t,m,s)-net: the shuffled prefixes stay nets. One index shuffle per stream keeps its
+// coordinates together.
 glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey) {
-    const uint64_t seeds = mixBits(streamKey);
-    const uint64_t moreSeeds = mixBits(seeds);
-    // Owen-scrambling the index maps each aligned block of 2^m indices onto an aligned block of
-    // 2^m (its high bits depend only on high bits), and every aligned block of a (0,2)-sequence
-    // is a (0,m,2)-net: the shuffled prefixes stay nets.
-    const uint32_t shuffled = owenScramble(index, static_cast<uint32_t>(seeds));
-    return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), static_cast<uint32_t>(seeds >> 32))),
-            toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), static_cast<uint32_t>(moreSeeds)))};
+    const StreamSeeds seeds(streamKey);
+    const uint32_t shuffled = owenScramble(index, seeds.index());
+    return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0))),
+            toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), seeds.coordinate(1)))};
+}
+
+float scrambledSobolValue(uint32_t index, uint64_t streamKey) {
+    const StreamSeeds seeds(streamKey);
+    const uint32_t shuffled = owenScramble(index, seeds.index());
+    return toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0)));
+}
+
+glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey) {
+    const StreamSeeds seeds(streamKey);
+    const uint32_t shuffled = owenScramble(index, seeds.index());
+    return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0))),
+            toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), seeds.coordinate(1))),
+            toUnitFloat(owenScramble(sobolThirdCoordinate(shuffled), seeds.coordinate(2)))};
 }
 
 }  // namespace strata

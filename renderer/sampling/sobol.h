@@ -1,7 +1,8 @@
 #pragma once
-// An Owen-scrambled Sobol' (0,2)-sequence in base 2, for stratifying each of the 24 strata
-// progressively (`strata24-qmc`, the paper's future work: uniform separation combined with
-// low-discrepancy points).
+// Owen-scrambled Sobol' sequences in base 2: the (0,2)-sequence that stratifies each of the 24
+// strata progressively (`strata24-qmc`, the paper's future work: uniform separation combined with
+// low-discrepancy points), and the 1D, 2D and 3D streams that stratify a path's other numbers over
+// its pixel (path_samples.h).
 //
 // The first two Sobol' dimensions form a (0,2)-sequence: for every m, each aligned block of 2^m
 // consecutive points is a (0,m,2)-net, i.e. every dyadic box of area 2^-m holds exactly one
@@ -11,10 +12,12 @@
 // every point alone is an unbiased sample. The scramble here is the hash-based one of Burley 2020
 // ("Practical Hash-based Owen Scrambling", JCGT 9(4)), which also shuffles the order of the
 // points by Owen-scrambling the index: that decorrelates streams that share an index (one
-// stream per pixel, bounce and stratum, all indexed by the pass) while each aligned block of
-// 2^m consecutive indices still maps to a (0,m,2)-net.
+// stream per pixel, bounce and stratum, all indexed by the pass; one per pixel, value and bounce,
+// indexed by the path number) while each aligned block of 2^m consecutive indices still maps to
+// a (0,m,2)-net.
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace strata {
 
@@ -23,6 +26,10 @@ namespace strata {
 // matrix of Sobol's second dimension (Pascal's triangle mod 2).
 uint32_t sobolFirstCoordinate(uint32_t index);
 uint32_t sobolSecondCoordinate(uint32_t index);
+// Sobol's third dimension (primitive polynomial x^2 + x + 1, direction numbers m = 1, 3, as in
+// Joe & Kuo's table). With the first two it makes a (1,3)-sequence: every aligned block of 2^m
+// points is a (1,m,3)-net.
+uint32_t sobolThirdCoordinate(uint32_t index);
 
 // Nested uniform (Owen) scrambling of the binary digits of `value`, most significant first,
 // chosen by `seed`: a bijection of 32-bit values in which bit k of the result depends only on
@@ -31,5 +38,10 @@ uint32_t owenScramble(uint32_t value, uint32_t seed);
 
 // Point `index` of the scrambled, shuffled sequence of stream `streamKey`, in [0,1)^2.
 glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey);
+// The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput sequence:
+// every aligned block of 2^m values has one value in each interval [k 2^-m, (k+1) 2^-m)), and
+// for the first three, shuffled by one index scramble so that the three stay jointly a net.
+float scrambledSobolValue(uint32_t index, uint64_t streamKey);
+glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey);
 
 }  // namespace strata

@@ -85,16 +85,18 @@ TEST_CASE("environment: a convex diffuse object under a sky of 1 reads rho, exac
 TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 standard errors for every sampler") {
     const Scene scene(convexCube(glm::vec3(0.6f), uniformSky(1.0f)));
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Strata24Qmc,
-                                SamplerKind::Strata24Cosine, SamplerKind::Cosine}) {
+                                SamplerKind::Strata24Cosine, SamplerKind::Strata24CosineQmc,
+                                SamplerKind::Cosine}) {
         for (bool nee : {false, true}) {
             CAPTURE(samplerName(sampler));
             CAPTURE(nee);
             const PathIntegrator integrator(scene, {3, sampler, nee});
             const auto estimate = test::estimateMean(test::pixelEstimates(integrator, rayOntoCube(5), 64, 4, 11));
             CHECK(std::abs(estimate.mean - 0.6) < 4.0 * estimate.standardError + 1e-6);
-            // Without light samples the cosine sampler is exact per path, and strata24-cosine
+            // Without light samples the cosine sampler is exact per path, and strata24-cosine(-qmc)
             // per pass: its strata's weights 24 PSA_i rho / pi average to rho over the 24.
-            const bool exact = !nee && (sampler == SamplerKind::Cosine || sampler == SamplerKind::Strata24Cosine);
+            const bool exact = !nee && (sampler == SamplerKind::Cosine || sampler == SamplerKind::Strata24Cosine ||
+                                        sampler == SamplerKind::Strata24CosineQmc);
             CHECK((estimate.standardError == 0.0) == exact);
         }
     }

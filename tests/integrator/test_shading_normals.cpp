@@ -65,7 +65,8 @@ TEST_CASE("shading normals: a plane with tilted normals receives pi (1 + cos 60)
     const Scene scene(tiltedPlane(uniformSky()));
     const double exact = kAlbedo * (1.0 + 0.5) / 2.0;  // rho / pi * pi (1 + cos beta) / 2
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
-                                SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc, SamplerKind::Bsdf}) {
+                                SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc,
+                                SamplerKind::Strata24CosineQmc, SamplerKind::Bsdf}) {
         for (bool nee : {false, true}) {
             CAPTURE(samplerName(sampler));
             CAPTURE(nee);
