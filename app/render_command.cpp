@@ -60,7 +60,7 @@ void RenderCommand::run() const {
         if (loaded.scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
-                         "note: the scene's point lights need --nee; without it they are dark\n");
+                         "note: the scene's point lights need next-event estimation; with --no-nee they are dark\n");
         }
         if (outputs.empty()) {
             std::fprintf(stderr, "note: no --out given, no image will be written\n");
@@ -138,6 +138,8 @@ void RenderCommand::run() const {
             {"height", camera.height()},
             {"sampler", samplerName(settings.integrator.sampler)},
             {"depth", settings.integrator.depth},
+            {"nee", settings.integrator.nextEventEstimation},
+            {"roulette_depth", settings.integrator.rouletteDepth},
             {"seed", settings.seed},
             {"ranks", job.ranks()},
             {"threads", session.threadCount()},  // per rank

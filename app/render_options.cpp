@@ -29,9 +29,10 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_option("--roulette-depth", rouletteDepth,
                        "Russian roulette from this bounce on, survival by path weight (-1: off)")
         ->capture_default_str();
-    command.add_flag("--nee", nee,
-                     "Next-event estimation: sample emitting triangles and the environment (MIS "
-                     "with the sampler) and point lights (reached only this way)");
+    command.add_flag("--nee,!--no-nee", nee,
+                     "Next-event estimation (on by default; --no-nee: off): sample emitting "
+                     "triangles and the environment (MIS with the sampler) and point lights "
+                     "(reached only this way)");
     auto* envOption = command.add_option(
         "--env", env,
         "Environment seen by rays leaving the scene: a latitude-longitude EXR (2:1, +y up) or "
@@ -68,7 +69,7 @@ std::vector<std::string> RenderOptions::arguments() const {
     if (rouletteDepth != defaults.rouletteDepth) {
         args.insert(args.end(), {"--roulette-depth", std::to_string(rouletteDepth)});
     }
-    if (nee) args.push_back("--nee");
+    if (nee != defaults.nee) args.push_back(nee ? "--nee" : "--no-nee");
     if (!env.empty()) args.insert(args.end(), {"--env", env});
     if (!envColor.empty()) {
         args.push_back("--env-color");

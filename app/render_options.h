@@ -25,8 +25,8 @@ struct RenderOptions {
     std::string sampler = "strata24";
     uint64_t seed = 0;
     int threads = 0;
-    bool nee = false;
-    int rouletteDepth = -1;
+    bool nee = true;
+    int rouletteDepth = kRouletteDepthDefault;
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y

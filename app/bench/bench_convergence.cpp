@@ -20,6 +20,8 @@ namespace {
 
 // The adaptive-sampling variant of the skips comparison stops pixels at 5% relative error.
 constexpr double kBenchNoiseThreshold = 0.05;
+// Russian roulette is on in the plain runs; this variant measures it by switching it off.
+constexpr const char* kNoRouletteVariant = "no-roulette";
 
 // The reference must not share the bench's random numbers, or its error would correlate with
 // theirs.
@@ -189,10 +191,9 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             static_cast<double>(settings.width) * loaded.settings.height / loaded.settings.width)));
         const Camera camera(loaded.settings.pose, settings.width, height);
         for (int depth : settings.depths) {
+            // The programs' defaults: next-event estimation and Russian roulette on.
             RenderOptions options;
             options.depth = depth;
-            // Point lights are reached by next-event estimation only: without it such a scene is black.
-            options.nee = loaded.scene.lights().deltaLights() > 0;
             options.seed = settings.seed;
             options.threads = settings.threads;
             const auto reference = findReference(loaded, camera, options, settings);
@@ -207,11 +208,11 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
             runs.insert(runs.end(), group.begin(), group.end());
             if (!settings.skips) continue;
             options.sampler = "strata24";
-            RenderOptions roulette = options;
-            roulette.rouletteDepth = 2;
+            RenderOptions noRoulette = options;
+            noRoulette.rouletteDepth = -1;
             RenderOptions adaptive = options;
             adaptive.noiseThreshold = kBenchNoiseThreshold;
-            for (const auto& [variant, variantOptions] : {std::pair{"roulette-from-2", roulette},
+            for (const auto& [variant, variantOptions] : {std::pair{kNoRouletteVariant, noRoulette},
                                                           std::pair{"adaptive-5pct", adaptive}}) {
                 runs.push_back(runOne(label, loaded, camera, variantOptions, *reference, settings, variant));
                 writeRunCsv(settings.outDir, runs.back());
@@ -239,10 +240,13 @@ std::string skipsSummary(const std::vector<ConvergenceRun>& runs) {
                    r.variant.empty() && !r.checkpoints.empty();
         });
         if (plain == runs.end()) continue;
-        const Checkpoint& with = run.checkpoints.back();
-        const Checkpoint& without = plain->checkpoints.back();
-        const std::string skip = run.variant == "roulette-from-2" ? "Russian roulette from bounce 2"
-                                                                  : "adaptive sampling, threshold 5%";
+        // The plain run has roulette and the variant not; adaptive sampling the other way round.
+        const bool rouletteOff = run.variant == kNoRouletteVariant;
+        const Checkpoint& with = rouletteOff ? plain->checkpoints.back() : run.checkpoints.back();
+        const Checkpoint& without = rouletteOff ? run.checkpoints.back() : plain->checkpoints.back();
+        const std::string skip =
+            rouletteOff ? "Russian roulette from bounce " + std::to_string(kRouletteDepthDefault)
+                        : std::string("adaptive sampling, threshold 5%");
         const bool exactBoth = !(with.mse > 0.0) || !(without.mse > 0.0);
         table.add({run.scene, std::to_string(run.depth), skip, cell("%.4g", with.mse),
                    cell("%.3f", with.cpuSeconds), cell("%.4g", without.mse), cell("%.3f", without.cpuSeconds),

@@ -69,6 +69,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
     RenderOptions strata;
     strata.scene = settings.scene.string();
     strata.nee = true;
+    strata.rouletteDepth = -1;  // every path to depth K, as the text below says
     strata.sampler = "strata24";
     strata.depth = settings.depth;
     strata.width = settings.width;
@@ -108,7 +109,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
     Table table{{"renderer", "wall s (median of " + std::to_string(settings.repeats) + ")",
                  "Mpaths/s", "CPU s (median)", "Mpaths/CPU-s", "image mean",
                  "image mean clamped to [0,1]"}, {}};
-    table.add({"strata render --nee (strata24)", cell("%.3f", ts), cell("%.3f", paths / ts * 1e-6),
+    table.add({"strata render --roulette-depth -1 (strata24, NEE)", cell("%.3f", ts), cell("%.3f", paths / ts * 1e-6),
                cell("%.3f", cs), cell("%.3f", paths / cs * 1e-6), cell("%.4f", strataMean),
                cell("%.4f", strataClamped)});
     table.add({"embree pathtracer", cell("%.3f", te), cell("%.3f", paths / te * 1e-6),

@@ -129,6 +129,8 @@ std::string runThroughput(const ThroughputSettings& settings) {
     RenderOptions options;
     options.depth = settings.depth;
     options.nee = nee;
+    // Every path goes to depth K, so that paths/s measures a fixed amount of work per path.
+    options.rouletteDepth = -1;
     options.seed = settings.seed;
     options.threads = settings.threads;
     const auto withSampler = [&](const char* sampler) {

@@ -38,8 +38,8 @@ struct WorkerConfig {
     int width = 0;  // full-resolution image
     int height = 0;
     std::vector<SideConfig> sides;  // one, or two for the split view
-    bool nextEventEstimation = false;
-    int rouletteDepth = -1;          // PathIntegratorSettings::rouletteDepth
+    bool nextEventEstimation = true;
+    int rouletteDepth = kRouletteDepthDefault;  // PathIntegratorSettings::rouletteDepth
     uint64_t seed = 0;
     int threads = 0;
     // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.

@@ -22,8 +22,8 @@ struct ViewerSettings {
     // of the depth sliders, when the scene allows it.
     bool depthFromEpsilon = false;
     float epsilon = 1e-3f;
-    bool nextEventEstimation = false;
-    int rouletteDepth = -1;  // Russian roulette from this bounce on; -1: off
+    bool nextEventEstimation = true;
+    int rouletteDepth = kRouletteDepthDefault;  // Russian roulette from this bounce on; -1: off
     uint64_t seed = 0;
     int threads = 0;
     float resolutionScale = 1.0f;

@@ -41,6 +41,24 @@ float orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
     return cosine;
 }
 
+// Russian roulette's survival probability for a path of weight `weight` (the 1/survival of
+// earlier bounces included): min(1, sqrt(max component)), as Cycles does, from bounce
+// kRouletteDepthDefault on. Measured at 256x256, depth 9, next-event estimation, medians of 3
+// alternated runs of 24 spp, against no roulette (variance per path relMSE x spp; relMSE x CPU
+// seconds, lower is better):
+//   Cornell box, bsdf sampler:        0.154 -> 0.168;  0.0112 -> 0.0083 (0.69 of the rays)
+//   Cornell box, strata24-qmc:        0.204 -> 0.215;  0.0179 -> 0.0132
+//   furnace (albedo 0.5), strata24-qmc: 0.018 -> 0.031; 0.0022 -> 0.0019
+// min(1, max component) from bounce 2 raises the Cornell variance per path to 0.261 and gains
+// less (0.0093, 0.0118), and in the furnace it loses (0.0043). Where the estimate without
+// roulette has almost no variance (the furnace with bsdf or cosine sampling: every path carries
+// the same light to its end) any roulette costs: 0.00003 -> 0.00067 here, the least of the rules
+// tried. The bare product of f cos / pdf (without the 1/survival divisions) stops far too many
+// paths: 11x the variance per path on the Cornell box.
+float rouletteSurvival(const glm::vec3& weight) {
+    return std::min(1.0f, std::sqrt(std::max(std::max(weight.x, weight.y), weight.z)));
+}
+
 }  // namespace
 
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
@@ -52,7 +70,7 @@ std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSett
     const SceneLights& lights = scene.lights();
     if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights, no environment)";
     if (lights.deltaLights() < lights.size()) return std::nullopt;
-    if (!settings.nextEventEstimation) return "its only lights are point lights, which need --nee";
+    if (!settings.nextEventEstimation) return "its only lights are point lights, which need next-event estimation (not --no-nee)";
     if (settings.depth == 0) return "its only lights are point lights, which depth 0 never reaches";
     return std::nullopt;
 }
@@ -106,7 +124,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samp
         weight *= sampled.weight;
         if (isBlack(weight)) break;
         if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
-            const float survival = std::min(1.0f, std::max(std::max(weight.x, weight.y), weight.z));
+            const float survival = rouletteSurvival(weight);
             if (samples.roulette(bounce) >= survival) break;
             weight /= survival;
         }

@@ -34,10 +34,15 @@ struct PathIntegratorSettings {
     // (combined with the bounce's own direction by MIS; delta lights are reached no other way).
     bool nextEventEstimation = false;
     // Russian roulette from this many bounces on (-1: off): the path goes on with probability
-    // q = min(1, max component of its weight) and its weight is divided by q. Unbiased; it trades
-    // a little variance for not tracing paths whose weight has become small.
+    // q = min(1, sqrt(max component of its weight)) and its weight is divided by q. Unbiased; it
+    // trades a little variance for not tracing paths whose weight has become small.
     int rouletteDepth = -1;
 };
+
+// The programs' defaults (strata render, view and bench) are next-event estimation on and
+// Russian roulette from this bounce on; the settings' own defaults above keep the paper's plain
+// estimator, which the exact tests check.
+inline constexpr int kRouletteDepthDefault = 4;
 
 // Why every path of this scene carries zero radiance, or nullopt when light can reach the camera:
 // no light at all, or only delta lights that next-event estimation would have to reach.

@@ -161,8 +161,9 @@ TEST_CASE("cli: a scene with no light is lit by a white sky, and says so; --env-
     std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
     std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
     std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20})";
+    // Cosine sampling alone is exact here; next-event estimation's MIS would add noise.
     const std::string render = "render " + (dir / "grey.obj").string() +
-                               " --sampler cosine --depth 2 --spp 24 --width 4 --height 4 --json";
+                               " --sampler cosine --no-nee --depth 2 --spp 24 --width 4 --height 4 --json";
     const auto lit = test::runStrata(render);
     REQUIRE(lit.exitCode == 0);
     CHECK(lit.err.find("note: the scene has no light; lighting it with a uniform white environment "
@@ -189,8 +190,9 @@ TEST_CASE("cli: --env overrides the scene description's environment, which stand
     std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
     std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20,)"
                                         R"("environment":{"color":[2,2,2]}})";
+    // Cosine sampling alone is exact here; next-event estimation's MIS would add noise.
     const std::string render = "render " + (dir / "grey.obj").string() +
-                               " --sampler cosine --depth 2 --spp 24 --width 4 --height 4 --json";
+                               " --sampler cosine --no-nee --depth 2 --spp 24 --width 4 --height 4 --json";
     const auto described = test::runStrata(render);
     REQUIRE(described.exitCode == 0);
     CHECK(described.err.find("note: the scene has no light") == std::string::npos);
@@ -201,4 +203,21 @@ TEST_CASE("cli: --env overrides the scene description's environment, which stand
     const auto dark = test::runStrata(render + " --env none --no-early-out");
     REQUIRE(dark.exitCode == 0);
     CHECK(nlohmann::json::parse(dark.out)["mean_rgb"][1].get<double>() == 0.0);
+}
+
+TEST_CASE("cli: next-event estimation and Russian roulette are on by default, each with its switch") {
+    const std::string render = "render " + furnace() + " --width 8 --height 8 --spp 24 --json";
+    const auto settingsOf = [&](const std::string& options) {
+        const auto result = test::runStrata(render + options);
+        REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+        const auto report = nlohmann::json::parse(result.out);
+        return std::pair{report["nee"].get<bool>(), report["roulette_depth"].get<int>()};
+    };
+    CHECK(settingsOf("") == std::pair{true, kRouletteDepthDefault});
+    CHECK(settingsOf(" --nee") == std::pair{true, kRouletteDepthDefault});
+    CHECK(settingsOf(" --no-nee") == std::pair{false, kRouletteDepthDefault});
+    CHECK(settingsOf(" --roulette-depth -1") == std::pair{true, -1});
+    const auto help = test::runStrata("render --help");
+    REQUIRE(help.exitCode == 0);
+    CHECK(help.out.find("--no-nee") != std::string::npos);
 }
