@@ -51,7 +51,8 @@ void RenderCommand::run() const {
     RenderJob job;
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
-    const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
+    const LoadedScene loaded =
+        job.collectively([&] { return render.parseScene(std::move(files), render.environment()); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);

@@ -148,15 +148,14 @@ Environment RenderOptions::environment() const {
     return environment;
 }
 
-LoadedScene RenderOptions::parseScene(SceneBundle files) const {
+LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
     LoadedScene loaded = strata::parseScene(std::move(files));
     // The --env options override the scene description's environment; without them it stands.
-    const Environment given = environment();
-    if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
+    if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
     return loaded;
 }
 
-LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle(), environment()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
     if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");

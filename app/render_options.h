@@ -45,10 +45,10 @@ struct RenderOptions {
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
     Environment environment() const;
-    // Builds the scene from its files; environment(), when the options give one, overrides the
-    // scene description's.
-    LoadedScene parseScene(SceneBundle files) const;
-    // Loads the scene and camera: parseScene(readSceneBundle()).
+    // Builds the scene from its files; `environment` (environment(), read once by the caller),
+    // unless Default, overrides the scene description's.
+    LoadedScene parseScene(SceneBundle files, const Environment& environment) const;
+    // Loads the scene and camera: parseScene(readSceneBundle(), environment()).
     LoadedScene loadScene() const;
     // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;

@@ -43,7 +43,10 @@ void ViewCommand::run() const {
     }
     if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
 
-    auto scene = std::make_shared<const LoadedScene>(render.loadScene());
+    // Read once: the map lights the first scene and stays in the settings for the scenes opened
+    // after it.
+    const Environment environment = render.environment();
+    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
     if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
@@ -51,7 +54,7 @@ void ViewCommand::run() const {
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
     viewer::ViewerSettings viewerSettings;
-    viewerSettings.environment = render.environment();
+    viewerSettings.environment = environment;
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;

@@ -1,5 +1,6 @@
 #include "bench/bench_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -41,11 +42,19 @@ struct BenchCommand {
     bool vsCycles = false;
     bool skipThroughput = false;
     bool skipRealScenes = false;
+    std::string only;  // one section of kSections; empty: all that the other options select
     uint64_t seed = 0;
     int threads = 0;
 
     void run() const;
+    // Whether the run includes `section` (one of kSections), selected by default unless `skipped`.
+    bool runs(const std::string& section, bool skipped = false) const {
+        return only.empty() ? !skipped : only == section;
+    }
 };
+
+// The sections `--only` can pick, as the summary orders them.
+const std::vector<std::string> kSections = {"errors", "throughput", "embree", "cycles", "viewer", "real-scenes", "ranks"};
 
 // The shared scene collection: an optional extra for the full suite, read when the working
 // directory has a sibling shared/ (a checkout beside the collection, run from its root).
@@ -119,6 +128,11 @@ void BenchCommand::run() const {
     if (!reference.empty() && !fs::is_regular_file(reference)) {
         throw Error("--reference " + reference + ": no such file");
     }
+    if (!only.empty() && std::find(kSections.begin(), kSections.end(), only) == kSections.end()) {
+        std::string known;
+        for (const auto& name : kSections) known += (known.empty() ? "" : "|") + name;
+        throw Error("--only: unknown section '" + only + "' (use " + known + ")");
+    }
     const fs::path bundled = scenes.empty() ? bundledAssetsDir() : fs::path();
     const fs::path out = outDir;
     fs::create_directories(out);
@@ -152,15 +166,18 @@ void BenchCommand::run() const {
     convergence.skips = true;
     convergence.threads = threads;
     convergence.outDir = out;
-    const auto runs = runConvergence(convergence);
 
     const int threadCount = threads > 0 ? threads : tbb::info::default_concurrency();
-    std::string summary = "# strata bench" + std::string(quick ? " --quick" : "") + "\n\n" + utcNow() +
-                          ", " + cpuModel() + ", " + threadsText(threadCount) +
-                          cell(", load average %.2f at the start", startLoad) + ".\n\n" +
-                          convergenceSummary(runs) + "\n" + skipsSummary(runs);
+    std::string summary = "# strata bench" + std::string(quick ? " --quick" : "") +
+                          (only.empty() ? "" : " --only " + only) + "\n\n" + utcNow() + ", " + cpuModel() +
+                          ", " + threadsText(threadCount) + cell(", load average %.2f at the start", startLoad) +
+                          ".\n\n";
+    if (runs("errors")) {
+        const auto convergenceRuns = runConvergence(convergence);
+        summary += convergenceSummary(convergenceRuns) + "\n" + skipsSummary(convergenceRuns);
+    }
 
-    if (!skipThroughput) {
+    if (runs("throughput", skipThroughput)) {
         ThroughputSettings throughput;
         throughput.scene = !scenes.empty() ? fs::path(scenes.front()) : cornellBox(quick);
         throughput.depth = depths.front();
@@ -170,7 +187,7 @@ void BenchCommand::run() const {
         throughput.outDir = out;
         summary += "\n" + runThroughput(throughput);
     }
-    if (vsEmbree) {
+    if (runs("embree", !vsEmbree)) {
         PeerSettings peer;
         peer.scene = kSharedScenes / "cornell_point" / "scene.obj";
         peer.depth = depths.front();
@@ -180,7 +197,7 @@ void BenchCommand::run() const {
         peer.outDir = out;
         summary += runPeerComparison(peer);
     }
-    if (vsCycles) {
+    if (runs("cycles", !vsCycles)) {
         CyclesBenchSettings peer;
         peer.scene = cornellBox(quick);
         peer.repeats = quick ? 1 : 3;
@@ -189,7 +206,7 @@ void BenchCommand::run() const {
         peer.outDir = out;
         summary += runCyclesComparison(peer);
     }
-    if (!skipThroughput) {
+    if (runs("viewer", skipThroughput)) {
         ViewerBenchSettings viewer;
         viewer.scene = scenes.empty() ? bundledScene("cornell") : fs::path(scenes.front());
         viewer.depth = depths.front();
@@ -202,7 +219,7 @@ void BenchCommand::run() const {
         }
         summary += runViewerComparison(viewer);
     }
-    if (!skipRealScenes) {
+    if (runs("real-scenes", skipRealScenes)) {
         RealScenesSettings real;
         real.baseline = cornellBox(quick);
         real.depth = depths.front();
@@ -213,10 +230,12 @@ void BenchCommand::run() const {
             real.height = 72;
             real.ratePasses = 1;
             real.repeats = 1;
+            real.viewerWidth = 640;
+            real.viewerHeight = 360;
         }
         summary += runRealScenes(real);
     }
-    if (!quick) {
+    if (runs("ranks", quick)) {
         RankSettings ranks;
         ranks.scene = bundledScene("cornell");
         ranks.depth = depths.front();
@@ -258,6 +277,9 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
     sub->add_flag("--skip-real-scenes", command->skipRealScenes,
                   "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");
+    sub->add_option("--only", command->only,
+                    "Run this section alone, whatever the other options leave out: errors, throughput, "
+                    "embree (--vs-embree), viewer, real-scenes or ranks");
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
     sub->callback([command] { command->run(); });

@@ -77,20 +77,33 @@ std::string runRealScenes(const RealScenesSettings& settings) {
     options.height = settings.height;
 
     // Whole processes, alternated: start-up, loading, the build and the first image, as a user
-    // waits for them.
-    std::vector<Entrant> renders;
+    // waits for them, from `strata render` and from the viewer (offscreen, its default split
+    // view, until one path per pixel of both sides is shown). The viewer's runs race apart: where
+    // they cannot run (no offscreen OpenGL, or a sanitizer build stopping on Mesa's leaks), the
+    // rest of the section stands.
+    std::vector<Entrant> renders, views;
     for (const RealScene& s : scenes) {
         RenderOptions o = options;
         o.scene = s.path.string();
         renders.push_back({s.name, renderCommandLine(o, settings.spp), {}, {}, {}, {}});
+        o.width.reset();  // the viewer's image follows its window
+        o.height.reset();
+        views.push_back({s.name + " (strata view)",
+                         strataCommandLine("view", o,
+                                           {"--headless", "--window", std::to_string(settings.viewerWidth),
+                                            std::to_string(settings.viewerHeight), "--frames", "1",
+                                            "--target-spp", "1"}),
+                         {}, {}, {}, {}});
     }
     const fs::path log = settings.outDir / "real-scenes.log";
     if (const auto failed = race(renders, settings.repeats, log, "real scenes")) {
         return kTitle + "Skipped: `strata render` of " + *failed + " failed (see " + log.string() + ").\n";
     }
+    const fs::path viewLog = settings.outDir / "real-scenes-view.log";
+    const auto viewFailed = race(views, settings.repeats, viewLog, "real scenes, viewer");
 
     Table table{{"scene", "triangles", "read ms", "parse ms", "BVH build ms", "first image s",
-                 "Mpaths/CPU-s", "vs Cornell box", "peak RSS MiB"}, {}};
+                 "viewer first image s", "Mpaths/CPU-s", "vs Cornell box", "peak RSS MiB"}, {}};
     double baselineRate = 0.0;
     for (size_t k = 0; k < scenes.size(); ++k) {
         RenderOptions o = options;
@@ -100,10 +113,12 @@ std::string runRealScenes(const RealScenesSettings& settings) {
         const RenderRate rate = measureRender(loaded.scene, o.makeCamera(loaded), o,
                                               static_cast<uint32_t>(settings.ratePasses));
         if (k == 0) baselineRate = rate.mpathsPerCpuSecond();
-        const long peakKiB = *std::max_element(renders[k].peakRssKiB.begin(), renders[k].peakRssKiB.end());
+        const Entrant& render = renders[k];
+        const long peakKiB = *std::max_element(render.peakRssKiB.begin(), render.peakRssKiB.end());
         table.add({scenes[k].name, std::to_string(loading.triangles), cell("%.1f", loading.readSeconds * 1e3),
                    cell("%.1f", loading.parseSeconds * 1e3), cell("%.1f", loading.buildSeconds * 1e3),
-                   cell("%.3f", renders[k].medianWall()), cell("%.3f", rate.mpathsPerCpuSecond()),
+                   cell("%.3f", render.medianWall()), viewFailed ? "-" : cell("%.3f", views[k].medianWall()),
+                   cell("%.3f", rate.mpathsPerCpuSecond()),
                    cell("%.3f", rate.mpathsPerCpuSecond() / baselineRate), cell("%.1f", peakKiB / 1024.0)});
     }
     writeTextFile(settings.outDir / "real-scenes.csv", table.csv());
@@ -114,6 +129,11 @@ std::string runRealScenes(const RealScenesSettings& settings) {
            "Read, parse and BVH build: in this process, once. " +
            cell("First image: `strata render --spp %d`, the whole process, median of %d alternated "
                 "run(s); peak RSS: the largest of those runs. ", settings.spp, settings.repeats) +
+           cell("Viewer first image: `strata view --headless --window %d %d --target-spp 1`, the whole "
+                "process until both sides of its split view hold one path per pixel, median of %d "
+                "alternated run(s)", settings.viewerWidth, settings.viewerHeight, settings.repeats) +
+           (viewFailed ? " (not measured: `strata view` of " + *viewFailed + " failed, see " + viewLog.string() + "). "
+                       : std::string(". ")) +
            cell("Mpaths/CPU-s: in this process, %d pass(es) after a warm-up. ", settings.ratePasses) +
            "Scenes without lights render under the default white sky.\n\n" +
            table.markdown() + (missing.empty() ? "" : "\n" + missing);

@@ -14,6 +14,8 @@ struct RealScenesSettings {
     int width = 160;   // of the whole-process renders and the in-process rate
     int height = 120;
     int spp = 24;      // of the whole-process renders: the first image
+    int viewerWidth = 1280;  // the viewer's window for its first image (its default)
+    int viewerHeight = 720;
     int ratePasses = 4;  // of the in-process rate, after one warm-up pass
     int repeats = 3;
     int threads = 0;  // 0: all cores

@@ -160,6 +160,14 @@ void RenderWorker::configure(const WorkerConfig& config, bool restart) {
     wake_.notify_all();
 }
 
+void RenderWorker::release() {
+    std::unique_lock lock(mutex_);
+    releasing_ = true;
+    cancel_ = true;
+    wake_.notify_all();
+    released_.wait(lock, [&] { return !releasing_; });
+}
+
 std::shared_ptr<const WorkerSnapshot> RenderWorker::latest() {
     std::lock_guard lock(snapshotMutex_);
     taken_ = true;
@@ -180,8 +188,19 @@ void RenderWorker::run() {
         uint64_t generation = 0;
         {
             std::unique_lock lock(mutex_);
-            wake_.wait(lock, [&] { return stop_ || (version_ != 0 && (!idle || version_ != seenVersion)); });
+            wake_.wait(lock, [&] {
+                return stop_ || releasing_ || (version_ != 0 && (!idle || version_ != seenVersion));
+            });
             if (stop_) return;
+            if (releasing_) {
+                // Rest until the next configure, which will bring a new job.
+                job.reset();
+                idle = true;
+                seenVersion = version_;
+                releasing_ = false;
+                released_.notify_all();
+                continue;
+            }
             seenVersion = version_;
             config = config_;
             generation = generation_;

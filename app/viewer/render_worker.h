@@ -108,6 +108,11 @@ public:
     // Takes the new configuration; restarts accumulation when `restart` or when anything but
     // the targets / paused changed.
     void configure(const WorkerConfig& config, bool restart = false);
+    // Stops rendering and lets go of the job: when it returns, the worker thread holds no
+    // session of the configured scene and reads nothing of it until the next configure, so the
+    // caller may change that scene in place (the viewer relights it). Waits for the step in
+    // flight to stop at its next tile.
+    void release();
     // The latest snapshot (null before the first); never waits for rendering.
     std::shared_ptr<const WorkerSnapshot> latest();
     // Called on the worker thread after each new snapshot: lets a UI that sleeps until an event
@@ -123,8 +128,10 @@ private:
     // `midStep`: between two bands of a step, shown only if the UI took the last snapshot.
     void publish(const Job& job, bool idle, bool midStep = false);
 
-    std::mutex mutex_;  // guards config_, version_, generation_, stop_
+    std::mutex mutex_;  // guards config_, version_, generation_, stop_, releasing_
     std::condition_variable wake_;
+    std::condition_variable released_;
+    bool releasing_ = false;  // release() waits for the worker thread to clear it
     WorkerConfig config_;
     uint64_t version_ = 0;
     uint64_t generation_ = 0;

@@ -15,6 +15,18 @@ namespace {
 // that a drag with short pauses between mouse events stays fluid.
 constexpr auto kSettleTime = std::chrono::milliseconds(150);
 constexpr float kDividerGrabPixels = 6.0f;
+// Blender's bundled studio-light worlds (CC0), offered in the panel when Blender is installed.
+const std::filesystem::path kStudioLights = "/usr/share/blender/datafiles/studiolights/world";
+
+std::vector<std::string> studioLightMaps() {
+    std::vector<std::string> maps;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(kStudioLights, error)) {
+        if (entry.path().extension() == ".exr") maps.push_back(entry.path().string());
+    }
+    std::sort(maps.begin(), maps.end());
+    return maps;
+}
 
 std::string sideText(const SideConfig& side, const SideSnapshot* snapshot) {
     char text[160];
@@ -27,7 +39,7 @@ std::string sideText(const SideConfig& side, const SideSnapshot* snapshot) {
 }
 }  // namespace
 
-Viewer::Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+Viewer::Viewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
                std::shared_ptr<const Image> reference)
     : scene_(std::move(scene)),
       reference_(std::move(reference)),
@@ -35,26 +47,19 @@ Viewer::Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& s
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
     panel_.setScenePath(scene_->scenePath().string());
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
+    panel_.setEnvironmentMapChoices(studioLightMaps());
+    if (settings_.environment.map) panel_.setEnvironmentMapPath(settings_.environment.map->name());
 }
 
 void Viewer::openScene(const std::filesystem::path& path) {
     if (path.extension() == ".exr") {
-        try {
-            Environment environment;
-            environment.kind = Environment::Kind::Map;
-            environment.map = readEnvironmentMap(path).map;
-            relight(environment);
-            settings_.environment = environment;
-            panel_.setMessage("environment " + path.string());
-        } catch (const std::exception& e) {
-            panel_.setMessage(std::string("cannot use environment map: ") + e.what());
-        }
+        openEnvironmentMap(path);
         return;
     }
     try {
         LoadedScene loaded = loadScene(path);
         if (settings_.environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(settings_.environment);
-        scene_ = std::make_shared<const LoadedScene>(std::move(loaded));
+        scene_ = std::make_shared<LoadedScene>(std::move(loaded));
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
         panel_.setScenePath(path.string());
         panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
@@ -67,10 +72,26 @@ void Viewer::openScene(const std::filesystem::path& path) {
     }
 }
 
-void Viewer::relight(const Environment& environment) {
-    LoadedScene relit = parseScene(scene_->bundle);
-    relit.scene.setEnvironment(environment);
-    scene_ = std::make_shared<const LoadedScene>(std::move(relit));
+void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
+    try {
+        const EnvironmentMapFile file = readEnvironmentMap(exrPath);
+        settings_.environment.kind = Environment::Kind::Map;
+        settings_.environment.map = file.map;
+        relight();
+        panel_.setEnvironmentMapPath(exrPath.string());
+        panel_.setMessage("environment " + exrPath.string() +
+                          (file.zeroedNegatives ? " (" + std::to_string(file.zeroedNegatives) +
+                                                      " slightly negative texel components read as 0)"
+                                                : ""));
+    } catch (const std::exception& e) {
+        panel_.setMessage(std::string("cannot use environment map: ") + e.what());
+    }
+}
+
+void Viewer::relight() {
+    worker_.release();
+    scene_->scene.setEnvironment(settings_.environment);
+    relit_ = true;
 }
 
 void Viewer::loadReference(const std::filesystem::path& exrPath) {
@@ -114,6 +135,8 @@ void Viewer::frame(const FrameTarget& target) {
     handleDivider(io, target);
     const auto now = std::chrono::steady_clock::now();
     if (camera_.update(io, !io.WantCaptureMouse && !draggingDivider_, !io.WantCaptureKeyboard)) lastMotion_ = now;
+    // A relight previews like a camera motion, so that dragging the rotation or intensity is fluid.
+    if (actions.relight) lastMotion_ = now;
     applyActions(actions);
 
     WorkerConfig config;
@@ -132,12 +155,13 @@ void Viewer::frame(const FrameTarget& target) {
     config.targetSpp = static_cast<uint32_t>(settings_.targetSpp);
     config.targetSeconds = settings_.targetSeconds;
     config.paused = settings_.paused;
-    if (!everConfigured_ || actions.reset || needsRestart(configured_, config) ||
+    if (!everConfigured_ || actions.reset || relit_ || needsRestart(configured_, config) ||
         configured_.targetSpp != config.targetSpp || configured_.targetSeconds != config.targetSeconds ||
         configured_.paused != config.paused) {
-        worker_.configure(config, actions.reset);
+        worker_.configure(config, actions.reset || relit_);
         configured_ = config;
         everConfigured_ = true;
+        relit_ = false;
     }
 
     DisplaySettings display = settings_.display;
@@ -196,6 +220,8 @@ void Viewer::drawOverlays(const FrameTarget& target) {
 
 void Viewer::applyActions(const PanelActions& actions) {
     if (actions.openScene) openScene(panel_.scenePath());
+    if (actions.openEnvironmentMap) openEnvironmentMap(panel_.environmentMapPath());
+    if (actions.relight) relight();
     if (actions.loadReference) loadReference(panel_.referencePath());
     try {
         if (actions.savePng) savePng(panel_.outputStem() + ".png");

@@ -19,17 +19,20 @@ namespace strata::viewer {
 class Viewer {
 public:
     // Needs a current OpenGL context with the ImGui context and its OpenGL 3 backend initialised.
-    Viewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+    // `scene` is lit as settings.environment says already; the viewer relights it in place.
+    Viewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
            std::shared_ptr<const Image> reference);
 
     // One UI frame. The caller has started the ImGui platform frame (io.DisplaySize, input).
     void frame(const FrameTarget& target);
 
     // Loads a scene file of any registered format, under settings().environment when that is
-    // given; an .exr is instead read as the environment map, which relights the open scene and
-    // the scenes opened after it. On failure (an unknown extension too) the old scene and
-    // environment stay and the panel shows why.
+    // given; an .exr is instead opened as the environment map (openEnvironmentMap). On failure
+    // (an unknown extension too) the old scene and environment stay and the panel shows why.
     void openScene(const std::filesystem::path& path);
+    // Reads the map, which then lights the open scene and the scenes opened after it, at the
+    // rotation chosen; on failure the old environment stays and the panel shows why.
+    void openEnvironmentMap(const std::filesystem::path& exrPath);
     void loadReference(const std::filesystem::path& exrPath);
 
     // See RenderWorker::setPublishCallback.
@@ -42,8 +45,9 @@ public:
     const WorkerSnapshot* shownSnapshot() const { return shown_.get(); }
 
 private:
-    // The open scene rebuilt from its files under `environment`: the shared scene is immutable.
-    void relight(const Environment& environment);
+    // The open scene lit by settings().environment, in place: its BVH and triangle lights stay
+    // (Scene::setEnvironment); the worker lets go of the scene meanwhile and then restarts.
+    void relight();
     void handleDivider(const ImGuiIO& io, const FrameTarget& target);
     void drawOverlays(const FrameTarget& target);
     void applyActions(const PanelActions& actions);
@@ -54,7 +58,7 @@ private:
     void savePng(const std::filesystem::path& path);
     void saveExr(const std::filesystem::path& stem);
 
-    std::shared_ptr<const LoadedScene> scene_;
+    std::shared_ptr<LoadedScene> scene_;
     std::shared_ptr<const Image> reference_;
     ViewerSettings settings_;
     ViewerPanel panel_;
@@ -67,6 +71,7 @@ private:
     DisplaySettings imageSettings_;
     WorkerConfig configured_;
     bool everConfigured_ = false;
+    bool relit_ = false;  // since the worker was last configured: restart it
     bool draggingDivider_ = false;
     std::chrono::steady_clock::time_point lastMotion_{};
     RenderWorker worker_;  // last: its thread stops before the rest goes

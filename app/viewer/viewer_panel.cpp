@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <utility>
 
 #include "error_plot.h"
 #include "io/image_io.h"
@@ -51,17 +53,20 @@ void ViewerPanel::setSceneReport(std::string summary, std::string warnings) {
 
 std::string describeEnvironment(const Scene& scene) {
     if (scene.lights().litByDefault()) return "default white sky: the scene has no light";
-    const Environment& environment = scene.mesh().environment;
-    char text[128];
+    const Environment& environment = scene.lights().environment();
+    char text[320];
     switch (environment.kind) {
         case Environment::Kind::Uniform:
             std::snprintf(text, sizeof text, "uniform (%.3g, %.3g, %.3g)", environment.radiance.x,
                           environment.radiance.y, environment.radiance.z);
             return text;
-        case Environment::Kind::Map:
-            std::snprintf(text, sizeof text, "map %dx%d turned %.3g degrees", environment.map->width,
-                          environment.map->height, environment.rotationDegrees);
+        case Environment::Kind::Map: {
+            const Image& image = environment.map->image();
+            std::snprintf(text, sizeof text, "map %s (%dx%d), turned %.3g degrees",
+                          std::filesystem::path(environment.map->name()).filename().string().c_str(), image.width,
+                          image.height, environment.rotationDegrees);
             return text;
+        }
         case Environment::Kind::Default:
         case Environment::Kind::None: break;
     }
@@ -74,6 +79,10 @@ void ViewerPanel::setScenePath(const std::string& path) {
 
 void ViewerPanel::setReferencePath(const std::string& path) {
     std::snprintf(referencePath_.data(), referencePath_.size(), "%s", path.c_str());
+}
+
+void ViewerPanel::setEnvironmentMapPath(const std::string& path) {
+    std::snprintf(environmentMapPath_.data(), environmentMapPath_.size(), "%s", path.c_str());
 }
 
 void ViewerPanel::setOutputStem(const std::string& stem) {
@@ -133,6 +142,154 @@ void ViewerPanel::truncationControls(ViewerSettings& settings, const Scene& scen
     }
 }
 
+void ViewerPanel::environmentControls(Environment& environment, PanelActions& actions) {
+    // A radiance set elsewhere (--env-color) taken apart: the intensity its largest component.
+    if (colour_ * intensity_ != environment.radiance) {
+        intensity_ = std::max({environment.radiance.x, environment.radiance.y, environment.radiance.z});
+        if (intensity_ > 0.0f) colour_ = environment.radiance / intensity_;
+    }
+    using Kind = Environment::Kind;
+    constexpr std::pair<const char*, Kind> kKinds[] = {
+        {"scene's", Kind::Default}, {"none", Kind::None}, {"uniform", Kind::Uniform}, {"map", Kind::Map}};
+    int kind = static_cast<int>(environment.kind);
+    for (const auto& [label, value] : kKinds) {
+        if (value != Kind::Default) ImGui::SameLine();
+        ImGui::RadioButton(label, &kind, static_cast<int>(value));
+        remember(std::string("environment ") + label, false);
+    }
+    if (kind != static_cast<int>(environment.kind)) {
+        const auto chosen = static_cast<Kind>(kind);
+        choosingMap_ = chosen == Kind::Map && !environment.map;
+        if (choosingMap_) {
+            // No map read yet: the one named below, else the first one offered.
+            if (environmentMapPath_[0] == '\0' && !mapChoices_.empty()) setEnvironmentMapPath(mapChoices_.front());
+            if (environmentMapPath_[0] != '\0') actions.openEnvironmentMap = true;
+        } else {
+            environment.kind = chosen;
+            actions.relight = true;
+        }
+    }
+    if (environment.kind == Kind::Uniform) {
+        bool changed = ImGui::ColorEdit3("colour", &colour_.x, ImGuiColorEditFlags_Float);
+        remember("environment colour");
+        changed |= ImGui::SliderFloat("intensity", &intensity_, 0.0f, 100.0f, "%.3g", ImGuiSliderFlags_Logarithmic);
+        remember("environment intensity");
+        intensity_ = std::max(intensity_, 0.0f);
+        if (changed) {
+            environment.radiance = colour_ * intensity_;
+            actions.relight = true;
+        }
+    }
+    if (environment.kind != Kind::Map && !choosingMap_) return;
+    if (environment.kind == Kind::Map) choosingMap_ = false;
+    ImGui::InputText("map file", environmentMapPath_.data(), environmentMapPath_.size());
+    actions.openEnvironmentMap |= ImGui::Button("open map");
+    remember("open map", false);
+    if (!mapChoices_.empty()) {
+        const std::string current = std::filesystem::path(environmentMapPath()).filename().string();
+        const bool open = ImGui::BeginCombo("studio lights", current.empty() ? "choose" : current.c_str());
+        remember("studio lights", false);
+        if (open) {
+            for (const std::string& path : mapChoices_) {
+                const std::string name = std::filesystem::path(path).filename().string();
+                if (ImGui::Selectable(name.c_str(), path == environmentMapPath())) {
+                    setEnvironmentMapPath(path);
+                    actions.openEnvironmentMap = true;
+                }
+                remember("studio lights/" + name, false);
+            }
+            ImGui::EndCombo();
+        }
+    }
+    if (environment.kind != Kind::Map) return;
+    actions.relight |= ImGui::SliderFloat("rotation", &environment.rotationDegrees, -180.0f, 180.0f, "%.0f degrees");
+    remember("environment rotation");
+}
+
+void ViewerPanel::statusLines(const WorkerSnapshot* snapshot, const Scene& scene) {
+    readouts(snapshot);
+    ImGui::TextWrapped("%s", sceneSummary_.c_str());
+    if (!sceneWarnings_.empty()) {
+        const auto count = std::count(sceneWarnings_.begin(), sceneWarnings_.end(), '\n');
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.2f, 1));
+        const bool open = ImGui::TreeNode("warnings", "%td loading warning%s", count, count == 1 ? "" : "s");
+        remember("warnings", false);
+        if (open) {
+            ImGui::TextWrapped("%s", sceneWarnings_.c_str());
+            ImGui::TreePop();
+        }
+        ImGui::PopStyleColor();
+    }
+    // Two lines kept for it, so that a relight (dragging the rotation) moves no control below.
+    const float top = ImGui::GetCursorPosY();
+    ImGui::TextWrapped("environment: %s", describeEnvironment(scene).c_str());
+    const float reserved = 2.0f * ImGui::GetTextLineHeightWithSpacing();
+    if (ImGui::GetCursorPosY() < top + reserved) ImGui::SetCursorPosY(top + reserved);
+    ImGui::Separator();
+}
+
+void ViewerPanel::samplingControls(ViewerSettings& settings, const Scene& scene) {
+    ImGui::Checkbox("split view", &settings.split);
+    remember("split view", false);
+    // Locked while epsilon chooses the depth; truncationControls sets it below.
+    const bool depthLocked = settings.depthFromEpsilon;
+    if (settings.split) {
+        sideControls("left ", settings.halves[0], depthLocked);
+        sideControls("right ", settings.halves[1], depthLocked);
+    } else {
+        sideControls("", settings.single, depthLocked);
+    }
+    truncationControls(settings, scene);
+    ImGui::Checkbox("next-event estimation", &settings.nextEventEstimation);
+    ImGui::SliderInt("roulette from bounce", &settings.rouletteDepth, -1, kMaxDepth,
+                     settings.rouletteDepth < 0 ? "off" : "%d");
+    int seed = static_cast<int>(settings.seed);
+    if (ImGui::InputInt("seed", &seed)) settings.seed = static_cast<uint64_t>(std::max(seed, 0));
+}
+
+void ViewerPanel::budgetControls(ViewerSettings& settings, PanelActions& actions) {
+    ImGui::SliderInt("threads (0: all)", &settings.threads, 0, 64);
+    ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.05f, 1.0f, "%.3f");
+    ImGui::InputFloat("noise threshold", &settings.noiseThreshold, 0.01f, 0.05f, "%.3f");
+    remember("noise threshold");
+    settings.noiseThreshold = std::clamp(settings.noiseThreshold, 0.0f, 10.0f);
+    ImGui::InputInt("target spp", &settings.targetSpp, kPathsPerPass, 10 * kPathsPerPass);
+    remember("target spp");
+    settings.targetSpp = std::max(settings.targetSpp, 0);
+    ImGui::InputFloat("target seconds", &settings.targetSeconds, 1.0f, 10.0f, "%.1f");
+    remember("target seconds");
+    settings.targetSeconds = std::max(settings.targetSeconds, 0.0f);
+    ImGui::Checkbox("paused", &settings.paused);
+    ImGui::SameLine();
+    actions.reset = ImGui::Button("reset");
+}
+
+void ViewerPanel::displayControls(DisplaySettings& display) {
+    int view = static_cast<int>(display.view);
+    ImGui::Combo("view", &view, kViews, IM_ARRAYSIZE(kViews));
+    display.view = static_cast<DisplayView>(view);
+    int tonemap = static_cast<int>(display.tonemap);
+    ImGui::Combo("tonemap", &tonemap, kTonemaps, IM_ARRAYSIZE(kTonemaps));
+    display.tonemap = static_cast<Tonemap>(tonemap);
+    ImGui::SliderFloat("exposure", &display.exposure, -8.0f, 8.0f, "%.1f stops");
+    if (display.view == DisplayView::RelativeError) {
+        ImGui::SliderFloat("error scale", &display.errorScale, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    }
+}
+
+void ViewerPanel::fileControls(PanelActions& actions) {
+    ImGui::InputText("scene file", scenePath_.data(), scenePath_.size());
+    actions.openScene = ImGui::Button("open scene");
+    ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
+    actions.loadReference = ImGui::Button("load reference");
+    ImGui::InputText("save as", outputStem_.data(), outputStem_.size());
+    actions.savePng = ImGui::Button("save PNG");
+    remember("save PNG", false);
+    ImGui::SameLine();
+    actions.saveExr = ImGui::Button("save EXR");
+    remember("save EXR", false);
+}
+
 PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene) {
     PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
@@ -140,74 +297,47 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Strata");
     ImGui::PushItemWidth(190.0f);
-    readouts(snapshot);
+    statusLines(snapshot, scene);
 
-    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Checkbox("split view", &settings.split);
-        remember("split view", false);
-        // Locked while epsilon chooses the depth; truncationControls sets it below.
-        const bool depthLocked = settings.depthFromEpsilon;
-        if (settings.split) {
-            sideControls("left ", settings.halves[0], depthLocked);
-            sideControls("right ", settings.halves[1], depthLocked);
-        } else {
-            sideControls("", settings.single, depthLocked);
+    // The controls in tabs, each short enough that the status above and the noise plots below
+    // stay in view at 720 pixels of height; `remember` names each tab, for the tests' clicks.
+    if (ImGui::BeginTabBar("sections")) {
+        const auto tab = [&](const char* name) {
+            const bool open = ImGui::BeginTabItem(name);
+            remember(name, false);
+            return open;
+        };
+        if (tab("Sampling")) {
+            samplingControls(settings, scene);
+            ImGui::EndTabItem();
         }
-        truncationControls(settings, scene);
-        ImGui::Checkbox("next-event estimation", &settings.nextEventEstimation);
-        ImGui::SliderInt("roulette from bounce", &settings.rouletteDepth, -1, kMaxDepth,
-                         settings.rouletteDepth < 0 ? "off" : "%d");
-        int seed = static_cast<int>(settings.seed);
-        if (ImGui::InputInt("seed", &seed)) settings.seed = static_cast<uint64_t>(std::max(seed, 0));
-        ImGui::SliderInt("threads (0: all)", &settings.threads, 0, 64);
-        ImGui::SliderFloat("resolution", &settings.resolutionScale, 0.05f, 1.0f, "%.3f");
-        ImGui::InputFloat("noise threshold", &settings.noiseThreshold, 0.01f, 0.05f, "%.3f");
-        remember("noise threshold");
-        settings.noiseThreshold = std::clamp(settings.noiseThreshold, 0.0f, 10.0f);
-        ImGui::InputInt("target spp", &settings.targetSpp, kPathsPerPass, 10 * kPathsPerPass);
-        remember("target spp");
-        settings.targetSpp = std::max(settings.targetSpp, 0);
-        ImGui::InputFloat("target seconds", &settings.targetSeconds, 1.0f, 10.0f, "%.1f");
-        remember("target seconds");
-        settings.targetSeconds = std::max(settings.targetSeconds, 0.0f);
-        ImGui::Checkbox("paused", &settings.paused);
-        ImGui::SameLine();
-        actions.reset = ImGui::Button("reset");
+        if (tab("Budget")) {
+            budgetControls(settings, actions);
+            ImGui::EndTabItem();
+        }
+        if (tab("Light")) {
+            environmentControls(settings.environment, actions);
+            ImGui::EndTabItem();
+        }
+        if (tab("Display")) {
+            displayControls(settings.display);
+            ImGui::EndTabItem();
+        }
+        if (tab("Files")) {
+            fileControls(actions);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
     }
-    if (snapshot && settings.split && ImGui::CollapsingHeader("Noise", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (snapshot && settings.split) {
+        ImGui::Separator();
         errorPlots(*snapshot, settings);
     }
-    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-        int view = static_cast<int>(settings.display.view);
-        ImGui::Combo("view", &view, kViews, IM_ARRAYSIZE(kViews));
-        settings.display.view = static_cast<DisplayView>(view);
-        int tonemap = static_cast<int>(settings.display.tonemap);
-        ImGui::Combo("tonemap", &tonemap, kTonemaps, IM_ARRAYSIZE(kTonemaps));
-        settings.display.tonemap = static_cast<Tonemap>(tonemap);
-        ImGui::SliderFloat("exposure", &settings.display.exposure, -8.0f, 8.0f, "%.1f stops");
-        if (settings.display.view == DisplayView::RelativeError) {
-            ImGui::SliderFloat("error scale", &settings.display.errorScale, 0.001f, 1.0f, "%.3f",
-                               ImGuiSliderFlags_Logarithmic);
-        }
+    // Last, so that a message coming or going moves no control.
+    if (!message_.empty()) {
+        ImGui::Separator();
+        ImGui::TextWrapped("%s", message_.c_str());
     }
-    const bool filesOpen = ImGui::CollapsingHeader("Files");
-    remember("Files", false);
-    if (filesOpen) {
-        ImGui::InputText("scene file", scenePath_.data(), scenePath_.size());
-        actions.openScene = ImGui::Button("open scene");
-        ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
-        actions.loadReference = ImGui::Button("load reference");
-        ImGui::InputText("save as", outputStem_.data(), outputStem_.size());
-        actions.savePng = ImGui::Button("save PNG");
-        remember("save PNG", false);
-        ImGui::SameLine();
-        actions.saveExr = ImGui::Button("save EXR");
-        remember("save EXR", false);
-    }
-    ImGui::TextWrapped("%s", sceneSummary_.c_str());
-    if (!sceneWarnings_.empty()) ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "%s", sceneWarnings_.c_str());
-    ImGui::TextWrapped("environment: %s", describeEnvironment(scene).c_str());
-    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::PopItemWidth();
     ImGui::End();
     return actions;

@@ -2,10 +2,17 @@
 // The viewer's Dear ImGui panel: every setting the user can change, the live readouts, the error
 // plots of the split view and the file actions. It edits ViewerSettings and reports the buttons
 // pressed; the Viewer applies them.
+//
+// Laid out for a 1280x720 window without scrolling: at the top, always in view, the readouts, the
+// open scene's load summary, its warnings (folded, with their count) and its environment; then
+// the controls in tabs (sampling, budget, light, display, files); then the split view's noise
+// plots and the last message.
 #include <array>
 #include <map>
 #include <string>
+#include <vector>
 #include <imgui.h>
+#include <glm/vec3.hpp>
 
 #include "display_pipeline.h"
 #include "lights/environment.h"
@@ -32,8 +39,10 @@ struct ViewerSettings {
     float targetSeconds = 0.0f;   // render time; 0: no limit
     bool paused = false;
     DisplaySettings display;
-    // The environment given on the command line (--env options) or by an .exr opened since:
-    // every scene opened takes it in place of its own; Default: each scene keeps its own.
+    // The environment given on the command line (--env options), chosen in the panel or by an
+    // .exr opened since: every scene opened takes it in place of its own; Default: each scene
+    // keeps its own. The map stays here while another kind is chosen, so going back to it
+    // reads nothing.
     Environment environment;
 
     // The sides the worker renders in the current mode.
@@ -46,6 +55,10 @@ struct PanelActions {
     bool saveExr = false;
     bool openScene = false;
     bool loadReference = false;
+    // settings.environment changed: light the open scene with it.
+    bool relight = false;
+    // Open environmentMapPath() as the environment map.
+    bool openEnvironmentMap = false;
 };
 
 class ViewerPanel {
@@ -65,8 +78,12 @@ public:
     std::string scenePath() const { return scenePath_.data(); }
     std::string referencePath() const { return referencePath_.data(); }
     std::string outputStem() const { return outputStem_.data(); }
+    std::string environmentMapPath() const { return environmentMapPath_.data(); }
     void setScenePath(const std::string& path);
     void setReferencePath(const std::string& path);
+    void setEnvironmentMapPath(const std::string& path);
+    // Maps offered in a list beside the map file field (Blender's studio lights, when installed).
+    void setEnvironmentMapChoices(std::vector<std::string> paths) { mapChoices_ = std::move(paths); }
     // The path (without extension) that the save buttons write to.
     void setOutputStem(const std::string& stem);
 
@@ -84,6 +101,16 @@ private:
     bool sideControls(const char* label, SideConfig& side, bool depthLocked);
     // The epsilon control: sets every side's depth to K_eps and says what it chose, or why not.
     void truncationControls(ViewerSettings& settings, const Scene& scene);
+    // The tabs' contents.
+    void samplingControls(ViewerSettings& settings, const Scene& scene);
+    void budgetControls(ViewerSettings& settings, PanelActions& actions);
+    void displayControls(DisplaySettings& display);
+    void fileControls(PanelActions& actions);
+    // What the panel always shows at its top, above the tabs: the render's readouts, the scene's
+    // load summary and warnings, and its environment.
+    void statusLines(const WorkerSnapshot* snapshot, const Scene& scene);
+    // The environment's kind, colour and intensity, map and rotation; sets `actions` for a change.
+    void environmentControls(Environment& environment, PanelActions& actions);
     void readouts(const WorkerSnapshot* snapshot);
     void errorPlots(const WorkerSnapshot& snapshot, const ViewerSettings& settings);
 
@@ -93,11 +120,19 @@ private:
     std::array<char, 1024> scenePath_{};
     std::array<char, 1024> referencePath_{};
     std::array<char, 1024> outputStem_{'s', 't', 'r', 'a', 't', 'a'};
+    std::array<char, 1024> environmentMapPath_{};
+    std::vector<std::string> mapChoices_;
+    // The uniform environment's radiance as the colour editor and the intensity slider show it,
+    // radiance = colour * intensity; taken apart again when the radiance changes elsewhere.
+    glm::vec3 colour_{1.0f};
+    float intensity_ = 1.0f;
+    // "map" was picked before any map was read: its file controls show until one is.
+    bool choosingMap_ = false;
     std::map<std::string, Rect> controls_;
 };
 
-// What rays that leave `scene` see, for the panel: "none", "uniform (r, g, b)", "map WxH turned
-// D degrees", or "default white sky: the scene has no light".
+// What rays that leave `scene` see, for the panel: "none", "uniform (r, g, b)", "map NAME (WxH),
+// turned D degrees", or "default white sky: the scene has no light".
 std::string describeEnvironment(const Scene& scene);
 
 // Colours of the split view's two sides, shared by the labels and the plots.

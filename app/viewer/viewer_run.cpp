@@ -123,7 +123,7 @@ void beginOffscreenFrame(int width, int height, float deltaSeconds) {
     io.DeltaTime = deltaSeconds;
 }
 
-ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
                         std::shared_ptr<const Image> reference, const ViewRunOptions& options) {
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384) {
         throw Error("--window: size must be in 16..16384");

@@ -48,7 +48,7 @@ struct ViewRunReport {
 
 // Runs frames until the window closes or, with `frames`, at least that many and, when the settings
 // set a target spp, until the render worker has reached it. Writes the screenshot of the last frame.
-ViewRunReport runViewer(std::shared_ptr<const LoadedScene> scene, const ViewerSettings& settings,
+ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
                         std::shared_ptr<const Image> reference, const ViewRunOptions& options);
 
 // The p-th percentile (0..100) of `values`, nearest rank.

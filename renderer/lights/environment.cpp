@@ -41,7 +41,7 @@ EnvironmentMapFile checkedMap(Image map, const std::string& name) {
             ++file.zeroedNegatives;
         }
     }
-    file.map = std::make_shared<const Image>(std::move(map));
+    file.map = std::make_shared<const EnvironmentMap>(std::move(map), name);
     return file;
 }
 
@@ -63,11 +63,7 @@ Environment resolveEnvironment(const Environment& given, bool sceneHasLights) {
 float maxRadiance(const Environment& environment) {
     switch (environment.kind) {
         case Environment::Kind::Uniform: return maxComponent(environment.radiance);
-        case Environment::Kind::Map: {
-            float largest = 0.0f;
-            for (const glm::vec3& texel : environment.map->pixels) largest = std::max(largest, maxComponent(texel));
-            return largest;
-        }
+        case Environment::Kind::Map: return environment.map->maxRadiance();
         case Environment::Kind::Default:
         case Environment::Kind::None: break;
     }

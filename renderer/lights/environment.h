@@ -13,18 +13,17 @@
 #include <string_view>
 #include <glm/vec3.hpp>
 
+#include "lights/environment_map.h"
 #include "lights/light.h"
 
 namespace strata {
 
-struct Image;
-
 struct Environment {
     enum class Kind { Default, None, Uniform, Map };
-    Kind kind = Kind::Default;           // Default: by the rule above
-    glm::vec3 radiance{1.0f};            // Uniform: from every direction
-    std::shared_ptr<const Image> map;    // Map: as readEnvironmentMap gives it
-    float rotationDegrees = 0.0f;        // Map: turned about the up axis +y
+    Kind kind = Kind::Default;                  // Default: by the rule above
+    glm::vec3 radiance{1.0f};                   // Uniform: from every direction
+    std::shared_ptr<const EnvironmentMap> map;  // Map: as readEnvironmentMap gives it
+    float rotationDegrees = 0.0f;               // Map: turned about the up axis +y
 };
 
 // What a scene says on stderr when the default rule lights it.
@@ -45,9 +44,10 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
 // to this fraction of the mean, negated, are that noise.
 inline constexpr float kNegativeNoise = 0.05f;
 
-// A map as read, with the count of slightly negative texel components read as 0.
+// A map as read, its sampling distribution built, with the count of slightly negative texel
+// components read as 0.
 struct EnvironmentMapFile {
-    std::shared_ptr<const Image> map;
+    std::shared_ptr<const EnvironmentMap> map;
     size_t zeroedNegatives = 0;
 };
 // Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are

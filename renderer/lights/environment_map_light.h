@@ -10,23 +10,22 @@
 // constant over a texel.
 //
 // Next-event estimation samples the texels in proportion to luminance times sin(theta) (the
-// sphere's area element in these coordinates) with a piecewise-constant 2D distribution; the
-// solid-angle density of a direction is then p(x, y) / (2 pi^2 sin(theta)), the Jacobian of
-// (x, y) -> direction.
+// sphere's area element in these coordinates) with the map's piecewise-constant 2D distribution
+// (environment_map.h), in the map's frame; the solid-angle density of a direction is then
+// p(x, y) / (2 pi^2 sin(theta)), the Jacobian of (x, y) -> direction. The rotation turns the
+// sampled directions and unturns the looked-up ones, so the light costs nothing to make.
 #include <memory>
 
+#include "lights/environment_map.h"
 #include "lights/light.h"
-#include "sampling/piecewise_constant_2d.h"
 
 namespace strata {
-
-struct Image;
 
 class EnvironmentMapLight final : public Light {
 public:
     // `map` as readEnvironmentMap (environment.h) gives it; `sceneRadius`: the scene's bounding
     // sphere, through which the light's power flows.
-    EnvironmentMapLight(std::shared_ptr<const Image> map, float rotationDegrees, float sceneRadius);
+    EnvironmentMapLight(std::shared_ptr<const EnvironmentMap> map, float rotationDegrees, float sceneRadius);
 
     std::optional<LightSample> sample(const glm::vec3& point, glm::vec2 u) const override;
     float pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const override;
@@ -41,9 +40,8 @@ private:
     glm::vec2 imagePoint(const glm::vec3& direction) const;
     const glm::vec3& texel(glm::ivec2 cell) const;
 
-    std::shared_ptr<const Image> map_;
+    std::shared_ptr<const EnvironmentMap> map_;
     float cosRotation_, sinRotation_;
-    PiecewiseConstant2D distribution_;
     glm::vec3 power_;
 };
 

@@ -53,16 +53,21 @@ SceneLights::SceneLights(const MeshData& mesh)
     }
     for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
     // Lights at infinity weigh their power by the area of the scene they can reach.
-    const float sceneRadius = boundingSphereRadius(mesh.positions);
+    sceneRadius_ = boundingSphereRadius(mesh.positions);
     for (const DirectionalLight& light : mesh.directionalLights) {
-        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius));
+        add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius_));
     }
-    const Environment environment = resolveEnvironment(mesh.environment, !lights_.empty());
-    if (auto light = makeEnvironmentLight(environment, sceneRadius)) {
-        atInfinity_.push_back(add(std::move(light)));
-        maxRadianceAtInfinity_ = maxRadiance(environment);
-        litByDefault_ = mesh.environment.kind == Environment::Kind::Default;
-    }
+    sceneOwnLights_ = lights_.size();
+    setEnvironment(mesh.environment);
+}
+
+void SceneLights::setEnvironment(const Environment& given) {
+    lights_.resize(sceneOwnLights_);
+    atInfinity_.clear();
+    environment_ = resolveEnvironment(given, sceneOwnLights_ > 0);
+    maxRadianceAtInfinity_ = maxRadiance(environment_);
+    litByDefault_ = given.kind == Environment::Kind::Default && environment_.kind != Environment::Kind::None;
+    if (auto light = makeEnvironmentLight(environment_, sceneRadius_)) atInfinity_.push_back(add(std::move(light)));
     sampler_ = LightSampler(powersOf(lights_));
 }
 

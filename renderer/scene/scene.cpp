@@ -223,9 +223,8 @@ Scene::Scene(Scene&& other) noexcept
     other.rtcScene_ = nullptr;
 }
 
-void Scene::setEnvironment(Environment environment) {
-    mesh_.environment = std::move(environment);
-    lights_ = SceneLights(mesh_);
+void Scene::setEnvironment(const Environment& environment) {
+    lights_.setEnvironment(environment.kind == Environment::Kind::Default ? mesh_.environment : environment);
 }
 
 std::optional<RayHit> Scene::intersect(const Ray& ray) const {

@@ -66,9 +66,11 @@ public:
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
-    // Replaces what rays that leave the scene see, and with it the lights; the triangles keep
-    // their lights' indices, since the environment is registered after them (scene_lights.h).
-    void setEnvironment(Environment environment);
+    // Lights the scene with `environment` in place of the one it was given (mesh().environment,
+    // which stays: Default goes back to it). Only what depends on the environment is rebuilt: its
+    // light and the choice among the lights (scene_lights.h); the triangles, their lights and the
+    // BVH stay, so relighting costs the same for a model of a million triangles as for a quad.
+    void setEnvironment(const Environment& environment);
 
     std::optional<RayHit> intersect(const Ray& ray) const;
     // The surface record at a hit.

@@ -184,6 +184,9 @@ const std::vector<BadInputCase> kCliCases = {
     {"samples --depth 0", {}, "samples --depth 0", "--depth: must be in 1..64"},
     {"samples --sampler unknown", {}, "samples --sampler halton", "--sampler: unknown sampler 'halton'"},
     {"samples --pixel not a number", {}, "samples --pixel x", "--pixel"},
+    // strata bench options
+    {"bench --only unknown section", {}, "bench --only colours --out-dir {dir}/out",
+     "--only: unknown section 'colours' (use errors|throughput|embree|cycles|viewer|real-scenes|ranks)"},
 };
 
 // Input that other tools open: it renders, with one "warning: " line for each thing tolerated.

@@ -229,3 +229,45 @@ TEST_CASE("environment: a scene with no light is lit white by default, and --env
     CHECK_FALSE(pointLit.lights().litByDefault());
     CHECK(pointLit.lights().lightsAtInfinity().empty());
 }
+
+TEST_CASE("environment: relit from a sky of 1 to a sky of 2, a scene renders exactly twice as bright, same BVH") {
+    // The environment is the only light: doubling its radiance doubles every path's contribution
+    // exactly (a power of two), with the same samples, light choices and rays, seed for seed.
+    MeshData mesh = convexCube(glm::vec3(0.6f), uniformSky(1.0f));
+    mesh.materials.push_back(diffuse(glm::vec3(0.3f)));
+    test::addQuad(mesh, {-3, -1, -3}, {3, -1, -3}, {3, -1, 3}, {-3, -1, 3}, 1);  // a floor for shadows
+    Scene scene(std::move(mesh));
+    const Camera camera(CameraPose{{0.5f, 2.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 50.0f}, 16, 12);
+    for (bool nee : {false, true}) {
+        CAPTURE(nee);
+        const RenderSettings settings{{3, SamplerKind::Strata24, nee}, 7, 1};
+        scene.setEnvironment(uniformSky(1.0f));
+        const AccumulationBuffer once = test::renderPasses(scene, camera, settings, 2);
+        const RTCScene bvh = scene.embreeScene();
+        const size_t triangles = scene.summary().triangles;
+        scene.setEnvironment(uniformSky(2.0f));
+        CHECK(scene.embreeScene() == bvh);
+        CHECK(scene.summary().triangles == triangles);
+        CHECK(maxEmittedRadiance(scene) == 2.0);
+        const AccumulationBuffer twice = test::renderPasses(scene, camera, settings, 2);
+        size_t differing = 0, lit = 0;
+        for (size_t i = 0; i < once.pixelCount(); ++i) {
+            differing += twice.mean(i) != 2.0 * once.mean(i);
+            lit += once.mean(i).y > 0.0;
+        }
+        CHECK(differing == 0);
+        CHECK(lit == once.pixelCount());
+    }
+}
+
+TEST_CASE("environment: a relit scene goes back to its own environment with Default") {
+    Scene scene(convexCube(glm::vec3(0.5f), Environment{}));
+    REQUIRE(scene.lights().litByDefault());
+    scene.setEnvironment(uniformSky(4.0f));
+    CHECK_FALSE(scene.lights().litByDefault());
+    CHECK(maxEmittedRadiance(scene) == 4.0);
+    scene.setEnvironment(Environment{});
+    CHECK(scene.lights().litByDefault());
+    CHECK(maxEmittedRadiance(scene) == 1.0);
+    CHECK(scene.mesh().environment.kind == Environment::Kind::Default);  // what it was given stays
+}

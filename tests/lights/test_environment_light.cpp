@@ -78,7 +78,7 @@ TEST_CASE("uniform environment: uniform over the sphere, pdf 1/(4 pi), power pi 
 
 TEST_CASE("environment map: sample() has the density pdf() gives and the radiance emitted() gives") {
     const double rotation = 30.0;
-    const EnvironmentMapLight light(std::make_shared<const Image>(labelledMap()), rotation, 1.0f);
+    const EnvironmentMapLight light(std::make_shared<const EnvironmentMap>(labelledMap(), "labelled"), rotation, 1.0f);
     // Expected counts: pdf() integrated over each texel by the midpoint rule in (theta, phi),
     // d(omega) = sin(theta) d(theta) d(phi).
     constexpr int kSub = 8;
@@ -135,7 +135,7 @@ TEST_CASE("environment map: image centre along -z, top row up, rotation right-ha
     Image map{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.0f))};
     map.pixels[2] = glm::vec3(7.0f);      // top row, just right of the centre: up, toward -z/+x
     map.pixels[4 + 1] = glm::vec3(3.0f);  // bottom row, left of the centre: down, toward -z/-x
-    const auto shared = std::make_shared<const Image>(map);
+    const auto shared = std::make_shared<const EnvironmentMap>(map, "map");
     const EnvironmentMapLight unturned(shared, 0.0f, 1.0f);
     CHECK(unturned.emitted(glm::normalize(glm::vec3(0.1f, 0.5f, -1.0f)), kMiss).x == 7.0f);
     CHECK(unturned.emitted(glm::normalize(glm::vec3(-0.1f, -0.5f, -1.0f)), kMiss).x == 3.0f);
@@ -146,9 +146,33 @@ TEST_CASE("environment map: image centre along -z, top row up, rotation right-ha
     CHECK(turned.emitted(glm::normalize(glm::vec3(-1.0f, -0.5f, 0.1f)), kMiss).x == 3.0f);
 }
 
+TEST_CASE("environment map: a turned map samples the unturned map's directions, turned, at their densities") {
+    // One distribution, in the map's frame, serves every rotation: a sample of the turned light
+    // is the unturned light's sample for the same u turned about +y, with the same radiance and
+    // density, and pdf() agrees with it.
+    const auto map = std::make_shared<const EnvironmentMap>(labelledMap(), "labelled");
+    CHECK(map->maxRadiance() == 500.0f);
+    const EnvironmentMapLight unturned(map, 0.0f, 1.0f);
+    const EnvironmentMapLight turned(map, 35.0f, 1.0f);
+    const double a = 35.0 * M_PI / 180.0;
+    for (uint64_t k = 0; k < 200; ++k) {
+        const auto u = randomPoint(k);
+        const auto s0 = unturned.sample(glm::vec3(0.0f), u);
+        const auto s1 = turned.sample(glm::vec3(0.0f), u);
+        REQUIRE(s0.has_value());
+        REQUIRE(s1.has_value());
+        const glm::dvec3 d(s0->direction);
+        const glm::dvec3 expected(std::cos(a) * d.x + std::sin(a) * d.z, d.y, -std::sin(a) * d.x + std::cos(a) * d.z);
+        CHECK(glm::length(glm::dvec3(s1->direction) - expected) < 1e-5);
+        CHECK(s1->radiance == s0->radiance);
+        CHECK(s1->pdf == doctest::Approx(s0->pdf).epsilon(1e-5));
+        CHECK(turned.pdf(glm::vec3(0.0f), s1->direction, kMiss) == doctest::Approx(s1->pdf).epsilon(1e-3));
+    }
+}
+
 TEST_CASE("environment map: power is pi r^2 times the radiance integrated over the sphere") {
     const Image map = labelledMap();
-    const EnvironmentMapLight light(std::make_shared<const Image>(map), 0.0f, 3.0f);
+    const EnvironmentMapLight light(std::make_shared<const EnvironmentMap>(map, "map"), 0.0f, 3.0f);
     glm::dvec3 integral(0.0);
     for (int y = 0; y < kHeight; ++y) {
         // The texel rows' exact solid angles.
@@ -159,8 +183,8 @@ TEST_CASE("environment map: power is pi r^2 times the radiance integrated over t
     CHECK(light.power().x == doctest::Approx(M_PI * 9.0 * integral.x).epsilon(1e-5));
     CHECK(light.power().y == doctest::Approx(M_PI * 9.0 * integral.y).epsilon(1e-5));
     // A uniform map has the uniform light's power.
-    const EnvironmentMapLight flat(std::make_shared<const Image>(Image{8, 4, std::vector<glm::vec3>(32, glm::vec3(2.0f))}),
-                                   0.0f, 3.0f);
+    const Image uniform{8, 4, std::vector<glm::vec3>(32, glm::vec3(2.0f))};
+    const EnvironmentMapLight flat(std::make_shared<const EnvironmentMap>(uniform, "flat"), 0.0f, 3.0f);
     CHECK(flat.power().x == doctest::Approx(UniformEnvironmentLight(glm::vec3(2.0f), 3.0f).power().x).epsilon(1e-5));
 }
 
@@ -178,7 +202,7 @@ TEST_CASE("environment: the default rule, and readEnvironmentMap refuses what is
     const auto dir = test::scratchDir("environment-maps");
     writeImage(dir / "good.exr", labelledMap());
     const EnvironmentMapFile good = readEnvironmentMap(dir / "good.exr");
-    CHECK(good.map->pixels == labelledMap().pixels);
+    CHECK(good.map->image().pixels == labelledMap().pixels);
     CHECK(good.zeroedNegatives == 0);
     // Lossy-compression ringing (texels a little below 0) reads as 0: the mean radiance is about
     // 22 here, so -1 is within 5% of it.
@@ -187,7 +211,7 @@ TEST_CASE("environment: the default rule, and readEnvironmentMap refuses what is
     writeImage(dir / "ringing.exr", ringing);
     const EnvironmentMapFile zeroed = readEnvironmentMap(dir / "ringing.exr");
     CHECK(zeroed.zeroedNegatives == 1);
-    CHECK(zeroed.map->pixels[7].y == 0.0f);
+    CHECK(zeroed.map->image().pixels[7].y == 0.0f);
     writeImage(dir / "square.exr", Image{4, 4, std::vector<glm::vec3>(16, glm::vec3(1.0f))});
     Image negative = labelledMap();
     negative.pixels[kWidth + 3].z = -2.0f;

@@ -73,3 +73,37 @@ TEST_CASE("scene lights: an environment comes after the triangles' lights and is
     CHECK_FALSE(lights.litByDefault());
     CHECK(lights.sampler().probability(2) == doctest::Approx(0.5f));
 }
+
+TEST_CASE("scene lights: a new environment replaces the old one's light alone and re-weighs the choice") {
+    Material lamp;
+    lamp.emission = glm::vec3(2.0f);
+    MeshData mesh;
+    mesh.materials = {lamp};
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // power 2 pi, radius 1/sqrt 2
+    SceneLights lights(mesh);  // no environment given: the lamp keeps the outside black
+    REQUIRE(lights.size() == 2);
+    const Light* triangleLight = &lights.light(0);
+    CHECK(lights.lightsAtInfinity().empty());
+    CHECK(lights.environment().kind == Environment::Kind::None);
+
+    Environment sky;
+    sky.kind = Environment::Kind::Uniform;
+    sky.radiance = glm::vec3(3.0f / kPi);  // power pi (1/2) 4 pi (3 / pi) = 6 pi: 3/4 of the total
+    lights.setEnvironment(sky);
+    REQUIRE(lights.size() == 3);
+    CHECK(&lights.light(0) == triangleLight);  // the triangles' lights are not rebuilt
+    CHECK(lights.lightOnTriangle(0) == 0);
+    CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
+    CHECK(lights.maxRadianceAtInfinity() == doctest::Approx(3.0f / kPi));
+    CHECK(lights.sampler().probability(0) == doctest::Approx(0.125f));
+    CHECK(lights.sampler().probability(2) == doctest::Approx(0.75f));
+    CHECK(lights.environment().kind == Environment::Kind::Uniform);
+
+    sky.kind = Environment::Kind::None;
+    lights.setEnvironment(sky);
+    CHECK(lights.size() == 2);
+    CHECK(lights.lightsAtInfinity().empty());
+    CHECK(lights.maxRadianceAtInfinity() == 0.0f);
+    CHECK(lights.sampler().probability(0) == doctest::Approx(0.5f));
+    CHECK(&lights.light(0) == triangleLight);
+}

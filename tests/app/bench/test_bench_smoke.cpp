@@ -93,8 +93,11 @@ TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as sp
             INFO(rows[r][0]);
             CHECK(std::stoul(rows[r][1]) > 0);    // triangles
             CHECK(std::stod(rows[r][5]) > 0.0);   // first image, s
-            CHECK(std::stod(rows[r][6]) > 0.0);   // Mpaths/CPU-s
-            CHECK(std::stod(rows[r][8]) > 0.0);   // peak RSS, MiB
+            // The viewer's first image, s, as the viewer's section: measured but in a sanitizer
+            // build, whose child `strata view` may stop on Mesa's leaks.
+            CHECK((rows[r][6] == "-" ? test::kSanitizedBuild : std::stod(rows[r][6]) > 0.0));
+            CHECK(std::stod(rows[r][7]) > 0.0);   // Mpaths/CPU-s
+            CHECK(std::stod(rows[r][9]) > 0.0);   // peak RSS, MiB
         }
     }
 }

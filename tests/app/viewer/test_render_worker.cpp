@@ -118,3 +118,39 @@ TEST_CASE("render worker: its error against a reference is imageError's RMSE of 
     CHECK(error.rmse > 0.1);
     CHECK(history.back().error == error.rmse);
 }
+
+TEST_CASE("render worker: release stops it and lets go of the scene, which may change in place before the next configure") {
+    // The viewer relights its open scene so; under ThreadSanitizer (CI) a worker still reading
+    // the scene while it changes would be a reported race.
+    RenderWorker worker;
+    WorkerConfig config = furnaceOnOneThread(32, 32, 8);
+    auto scene = std::make_shared<LoadedScene>(loadScene(test::sourceDir() / "assets/furnace/furnace.obj"));
+    config.scene = scene;
+    worker.configure(config);  // no target: it renders until told otherwise
+    std::shared_ptr<const WorkerSnapshot> rendering;
+    while (!(rendering = worker.latest()) || rendering->spp < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+
+    worker.release();
+    const auto last = worker.latest();
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(worker.latest() == last);  // nothing rendered or published since
+    Environment sky;
+    sky.kind = Environment::Kind::Uniform;
+    sky.radiance = glm::vec3(2.0f);
+    scene->scene.setEnvironment(sky);
+
+    config.targetSpp = 24;
+    worker.configure(config, true);
+    const auto done = restAt(worker, 24);
+    CHECK(done->generation > rendering->generation);
+    CHECK(done->paths == uint64_t{24} * 32 * 32);
+    worker.release();  // at rest, too
+    scene->scene.setEnvironment(Environment{});
+    worker.configure(config, true);
+    for (int i = 0; i < 120000; ++i) {
+        const auto snapshot = worker.latest();
+        if (snapshot->generation > done->generation && snapshot->idle && snapshot->spp == 24) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    FAIL("the render worker never rendered again after the second release");
+}

@@ -29,7 +29,7 @@ struct Harness {
 
     explicit Harness(const ViewerSettings& settings,
                      const std::filesystem::path& scene = test::sourceDir() / "assets/cornell/cornell.obj")
-        : viewer(std::make_shared<const LoadedScene>(loadScene(scene)), settings, nullptr) {
+        : viewer(std::make_shared<LoadedScene>(loadScene(scene)), settings, nullptr) {
         frame();
         frame();  // the panel's layout settles on its second frame
     }
@@ -102,6 +102,7 @@ TEST_CASE("the depth slider sets the recursion depth K") {
 
 TEST_CASE("a target spp set in the panel stops rendering there") {
     Harness h(smallSingleView());
+    h.click("Budget");
     // The "+" button right of the field adds one pass (24) per click.
     const auto& controls = h.viewer.panel().controls();
     REQUIRE(controls.count("target spp") == 1);
@@ -183,7 +184,7 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     CHECK(relit->scenePath() == dir / "grey.obj");
     CHECK(h.viewer.panel().message() == "environment " + (dir / "sky.exr").string());
     CHECK(h.viewer.settings().environment.kind == Environment::Kind::Map);
-    CHECK(describeEnvironment(relit->scene) == "map 4x2 turned 0 degrees");
+    CHECK(describeEnvironment(relit->scene) == "map sky.exr (4x2), turned 0 degrees");
 
     writeImage(dir / "square.exr", Image{2, 2, std::vector<glm::vec3>(4, glm::vec3(1.0f))});
     h.viewer.openScene(dir / "square.exr");
@@ -197,6 +198,96 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     h.frame();
     CHECK(h.viewer.workerConfig().scene->scene.lights().maxRadianceAtInfinity() == 0.5f);
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("the Light tab relights the open scene in place: same scene and BVH, accumulation restarts") {
+    const auto dir = test::scratchDir("viewer-light-tab");
+    Harness h(smallSingleView(), writeUnlitQuad(dir));
+    const auto scene = h.viewer.workerConfig().scene;
+    const RTCScene bvh = scene->scene.embreeScene();
+    REQUIRE(scene->scene.lights().litByDefault());
+    uint64_t generation = h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1; }).generation;
+    const auto restarted = [&] {
+        generation = h.waitFor([&](const WorkerSnapshot& s) { return s.generation > generation && s.spp >= 1; })
+                         .generation;
+    };
+    h.click("Light");
+    h.click("environment none");
+    CHECK(h.viewer.settings().environment.kind == Environment::Kind::None);
+    CHECK(h.viewer.workerConfig().scene == scene);
+    CHECK(scene->scene.embreeScene() == bvh);
+    CHECK(scene->scene.lights().size() == 0);
+    CHECK(describeEnvironment(scene->scene) == "none");
+    restarted();
+
+    h.click("environment uniform");
+    CHECK(scene->scene.lights().maxRadianceAtInfinity() == 1.0f);
+    CHECK_FALSE(scene->scene.lights().litByDefault());
+    restarted();
+    // The intensity slider's right end: radiance 100 times the colour (white), beyond 1.
+    h.click("environment intensity", 0.999f);
+    CHECK(h.viewer.settings().environment.radiance == glm::vec3(100.0f));
+    CHECK(scene->scene.lights().maxRadianceAtInfinity() == 100.0f);
+    CHECK(describeEnvironment(scene->scene) == "uniform (100, 100, 100)");
+    restarted();
+
+    h.click("environment scene's");
+    CHECK(scene->scene.lights().litByDefault());
+    CHECK(describeEnvironment(scene->scene) == "default white sky: the scene has no light");
+    CHECK(scene->scene.embreeScene() == bvh);
+    CHECK(h.viewer.workerConfig().scene == scene);
+    restarted();
+}
+
+TEST_CASE("the Light tab opens a listed map once; turning it or going back to it reads nothing again") {
+    const auto dir = test::scratchDir("viewer-light-maps");
+    Harness h(smallSingleView(), writeUnlitQuad(dir));
+    writeImage(dir / "warm.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(2.0f, 1.0f, 0.5f))});
+    writeImage(dir / "cool.exr", Image{8, 4, std::vector<glm::vec3>(32, glm::vec3(0.25f, 0.5f, 3.0f))});
+    h.viewer.panel().setEnvironmentMapChoices({(dir / "warm.exr").string(), (dir / "cool.exr").string()});
+    const auto& lights = h.viewer.workerConfig().scene->scene.lights();
+    h.click("Light");
+    h.click("environment map");  // no map read yet: the first one listed
+    REQUIRE(h.viewer.settings().environment.kind == Environment::Kind::Map);
+    const auto map = h.viewer.settings().environment.map;
+    CHECK(map->name() == (dir / "warm.exr").string());
+    CHECK(lights.maxRadianceAtInfinity() == 2.0f);
+    CHECK(h.viewer.panel().message() == "environment " + (dir / "warm.exr").string());
+
+    h.click("environment rotation", 0.75f);  // -180..180 degrees: about 90
+    const float degrees = h.viewer.settings().environment.rotationDegrees;
+    CHECK(degrees > 45.0f);
+    CHECK(degrees < 135.0f);
+    CHECK(lights.environment().rotationDegrees == degrees);
+    CHECK(lights.environment().map == map);  // the same map and distribution, turned
+    CHECK(describeEnvironment(h.viewer.workerConfig().scene->scene).rfind("map warm.exr (4x2), turned ", 0) == 0);
+
+    h.click("environment uniform");
+    h.click("environment map");
+    CHECK(lights.environment().map == map);
+    CHECK(lights.environment().rotationDegrees == degrees);
+
+    h.click("studio lights");
+    h.click("studio lights/cool.exr");
+    CHECK(lights.environment().map->name() == (dir / "cool.exr").string());
+    CHECK(lights.maxRadianceAtInfinity() == 3.0f);
+    CHECK(h.viewer.panel().environmentMapPath() == (dir / "cool.exr").string());
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("at 1280x720 the load summary, its warnings and the environment are in view above the controls") {
+    const auto dir = test::scratchDir("viewer-layout");
+    std::ofstream(dir / "s.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n";
+    Harness h(smallSingleView(), dir / "s.obj");
+    const auto& controls = h.viewer.panel().controls();
+    REQUIRE(controls.count("warnings") == 1);
+    REQUIRE(controls.count("Sampling") == 1);
+    // In view without scrolling: above the bottom of a 720-pixel window, and above the tabs.
+    CHECK(controls.at("warnings").max.y < controls.at("Sampling").min.y);
+    CHECK(controls.at("Sampling").max.y < 720.0f);
+    // Every tab's controls fit too (the harness's window is 720 high).
+    h.click("Budget");
+    CHECK(controls.at("target seconds").max.y < 720.0f);
 }
 
 TEST_CASE("the command line's environment lights every scene the viewer opens") {
@@ -337,7 +428,7 @@ TEST_CASE("the save buttons write the image as displayed (PNG) and its linear ra
     const DisplayImage& shown = done.sides.at(0).image;
     const auto dir = test::scratchDir("viewer-save");
     h.viewer.panel().setOutputStem((dir / "shot").string());
-    h.click("Files");  // the section starts folded
+    h.click("Files");  // the tab starts hidden
     h.click("save PNG");
     h.click("save EXR");
     CHECK(h.viewer.panel().message().find("shot.exr") != std::string::npos);
