@@ -22,7 +22,7 @@ struct RenderOptions {
     std::optional<int> height;
     int depth = 5;
     std::optional<double> epsilon;  // when set, the depth comes from the truncation error
-    std::string sampler = "strata24";
+    std::string sampler = "strata24-bsdf";
     uint64_t seed = 0;
     int threads = 0;
     bool nee = true;

@@ -27,7 +27,7 @@
 namespace strata::viewer {
 
 struct SideConfig {
-    SamplerKind sampler = SamplerKind::Strata24;
+    SamplerKind sampler = SamplerKind::Strata24Bsdf;
     int depth = 5;
     bool operator==(const SideConfig&) const = default;
 };

@@ -22,7 +22,7 @@ namespace strata::viewer {
 
 struct ViewerSettings {
     bool split = true;
-    SideConfig single{SamplerKind::Strata24, 5};                    // the one-image view
+    SideConfig single{SamplerKind::Strata24Bsdf, 5};                  // the one-image view
     std::array<SideConfig, 2> halves{SideConfig{SamplerKind::Uniform, 5},
                                      SideConfig{SamplerKind::Strata24, 5}};  // split: left, right
     // Every side's depth K_eps from the truncation error `epsilon` (renderer/integrator/truncation.h) instead

@@ -73,10 +73,9 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, glm::vec2 u,
     }
     glm::vec3 wi;
     if (lobeChoice < pSpecular) {
-        const glm::vec3 h = lobe_->distribution.sampleVisibleNormal(wo, u);
-        wi = 2.0f * glm::dot(wo, h) * h - wo;
-        if (wi.z <= 0.0f) return std::nullopt;
-        wi = glm::normalize(wi);
+        const auto specular = sampleSpecular(wo, u);
+        if (!specular) return std::nullopt;
+        wi = *specular;
     } else {
         wi = sampleCosineHemisphere(u);
     }
@@ -89,8 +88,19 @@ float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     const float pSpecular = specularProbability(wo);
     float density = (1.0f - pSpecular) * cosineHemispherePdf(wi);
-    if (pSpecular > 0.0f) density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
+    if (pSpecular > 0.0f) density += pSpecular * specularPdf(wo, wi);
     return density;
+}
+
+std::optional<glm::vec3> LayeredBsdf::sampleSpecular(const glm::vec3& wo, glm::vec2 u) const {
+    const glm::vec3 h = lobe_->distribution.sampleVisibleNormal(wo, u);
+    const glm::vec3 wi = 2.0f * glm::dot(wo, h) * h - wo;
+    if (wi.z <= 0.0f) return std::nullopt;
+    return glm::normalize(wi);
+}
+
+float LayeredBsdf::specularPdf(const glm::vec3& wo, const glm::vec3& wi) const {
+    return lobe_->distribution.reflectionPdf(wo, wi);
 }
 
 }  // namespace strata

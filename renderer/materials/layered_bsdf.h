@@ -62,6 +62,11 @@ public:
     float specularProbability(const glm::vec3& wo) const;
     // Density of sample()'s direction wi, the mixture of both lobes' densities.
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
+    // The specular lobe alone, for samplers that take the diffuse layer's direction elsewhere:
+    // a direction by GGX visible normals (empty when it falls below the surface) and its density.
+    // Only for a BSDF with a specular layer.
+    std::optional<glm::vec3> sampleSpecular(const glm::vec3& wo, glm::vec2 u) const;
+    float specularPdf(const glm::vec3& wo, const glm::vec3& wi) const;
 
     // The directional albedo the layering assigns at wo: E_F(mu_o) + Kd (1 - E_F(mu_o)), from the
     // tables (the white-furnace test integrates evaluate() to check it).

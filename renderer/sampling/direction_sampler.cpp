@@ -7,12 +7,13 @@
 
 namespace strata {
 namespace {
-constexpr NameTable<SamplerKind, 7> kSamplers{{{{"uniform", SamplerKind::Uniform},
+constexpr NameTable<SamplerKind, 8> kSamplers{{{{"uniform", SamplerKind::Uniform},
                                                 {"strata24", SamplerKind::Strata24},
                                                 {"cosine", SamplerKind::Cosine},
                                                 {"strata24-cosine", SamplerKind::Strata24Cosine},
                                                 {"strata24-qmc", SamplerKind::Strata24Qmc},
                                                 {"strata24-cosine-qmc", SamplerKind::Strata24CosineQmc},
+                                                {"strata24-bsdf", SamplerKind::Strata24Bsdf},
                                                 {"bsdf", SamplerKind::Bsdf}}}};
 
 // A direction from a hemisphere sampler whose cos / pdf is known in closed form: the weight is
@@ -23,6 +24,19 @@ SampledDirection hemisphereSample(const LayeredBsdf& bsdf, const glm::vec3& wo,
     return {wi, pdf, bsdf.evaluate(wo, wi) * cosOverPdf, stratum};
 }
 
+// The cosine-weighted stratum's density of `wi` marginal over the path's stratum (1/24 each):
+// cos / (24 PSA_i) for the stratum i that holds it.
+float stratumCosinePdf(const glm::vec3& wi) {
+    return wi.z / static_cast<float>(kStrataCount * stratumProjectedSolidAngle(classifyStratum(wi)));
+}
+
+// A cosine-weighted direction in stratum `stratum` from the point `u`: weight 24 PSA_i f.
+SampledDirection cosineStratumSample(const LayeredBsdf& bsdf, const glm::vec3& wo, int stratum, glm::vec2 u) {
+    const glm::vec3 d = sampleStratumCosine(stratum, u);
+    const auto cosOverPdf = static_cast<float>(kStrataCount * stratumProjectedSolidAngle(stratum));
+    return hemisphereSample(bsdf, wo, d, cosOverPdf, stratum);
+}
+
 }  // namespace
 
 std::optional<SamplerKind> parseSamplerKind(std::string_view name) { return kSamplers.parse(name); }
@@ -31,7 +45,8 @@ std::string samplerNames() { return kSamplers.joined(); }
 
 bool stratifies(SamplerKind kind) {
     return kind == SamplerKind::Strata24 || kind == SamplerKind::Strata24Cosine ||
-           kind == SamplerKind::Strata24Qmc || kind == SamplerKind::Strata24CosineQmc;
+           kind == SamplerKind::Strata24Qmc || kind == SamplerKind::Strata24CosineQmc ||
+           kind == SamplerKind::Strata24Bsdf;
 }
 
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
@@ -58,10 +73,27 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
             const int id = samples.stratum(bounce);
             const glm::vec2 u = kind == SamplerKind::Strata24Cosine ? samples.bouncePoint(bounce)
                                                                     : samples.stratumSequencePoint(bounce);
-            const glm::vec3 d = sampleStratumCosine(id, u);
-            const auto cosOverPdf =
-                static_cast<float>(kStrataCount * stratumProjectedSolidAngle(id));
-            return hemisphereSample(bsdf, wo, d, cosOverPdf, id);
+            return cosineStratumSample(bsdf, wo, id, u);
+        }
+        case SamplerKind::Strata24Bsdf: {
+            const int id = samples.stratum(bounce);
+            const float pSpecular = bsdf.specularProbability(wo);
+            // A Lambertian surface: strata24-cosine-qmc, with its exact weight.
+            if (pSpecular == 0.0f) return cosineStratumSample(bsdf, wo, id, samples.stratumSequencePoint(bounce));
+            // The specular lobe's direction lies in no particular stratum.
+            int stratum = id;
+            glm::vec3 d;
+            if (samples.lobeChoice(bounce) < pSpecular) {
+                const auto specular = bsdf.sampleSpecular(wo, samples.bouncePoint(bounce));
+                if (!specular) return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
+                d = *specular;
+                stratum = -1;
+            } else {
+                d = sampleStratumCosine(id, samples.stratumSequencePoint(bounce));
+            }
+            const float pdf = directionPdf(kind, bsdf, wo, d);
+            if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};
+            return {d, pdf, bsdf.evaluate(wo, d) * (d.z / pdf), stratum};
         }
         case SamplerKind::Bsdf: {
             const auto s = bsdf.sample(wo, samples.bouncePoint(bounce), samples.lobeChoice(bounce));
@@ -85,9 +117,12 @@ float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& w
         case SamplerKind::Strata24Qmc: return 1.0f / kHemisphereSolidAngle;
         case SamplerKind::Cosine: return cosineHemispherePdf(wi);
         case SamplerKind::Strata24Cosine:
-        case SamplerKind::Strata24CosineQmc:
-            return wi.z / static_cast<float>(kStrataCount *
-                                             stratumProjectedSolidAngle(classifyStratum(wi)));
+        case SamplerKind::Strata24CosineQmc: return stratumCosinePdf(wi);
+        case SamplerKind::Strata24Bsdf: {
+            const float pSpecular = bsdf.specularProbability(wo);
+            const float diffuse = (1.0f - pSpecular) * stratumCosinePdf(wi);
+            return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
+        }
         case SamplerKind::Bsdf: return bsdf.pdf(wo, wi);
     }
     return 0.0f;

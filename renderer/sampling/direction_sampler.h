@@ -17,6 +17,10 @@
 //                     refine every stratum (the paper's future work);
 //   strata24-cosine-qmc - strata24-cosine with the points of strata24-qmc: cosine-weighted inside
 //                     each stratum, each stratum refined by its Sobol' stream;
+//   strata24-bsdf   - the flagship: strata24-cosine-qmc for the diffuse layer, the specular
+//                     layer by GGX visible normals, chosen as bsdf chooses its lobe; densities
+//                     are the mixture's, so it is unbiased for every material, and on a
+//                     Lambertian surface it is strata24-cosine-qmc exactly;
 //   bsdf            - importance sampling of the whole material (material.h: cosine for the
 //                     Lambertian layer, GGX visible normals for the specular one).
 // All are unbiased for every path, so a partial pass is an unbiased estimate.
@@ -30,7 +34,7 @@
 
 namespace strata {
 
-enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Strata24CosineQmc, Bsdf };
+enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Strata24CosineQmc, Strata24Bsdf, Bsdf };
 
 std::optional<SamplerKind> parseSamplerKind(std::string_view name);
 std::string_view samplerName(SamplerKind kind);

@@ -86,7 +86,7 @@ TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 stan
     const Scene scene(convexCube(glm::vec3(0.6f), uniformSky(1.0f)));
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Strata24Qmc,
                                 SamplerKind::Strata24Cosine, SamplerKind::Strata24CosineQmc,
-                                SamplerKind::Cosine}) {
+                                SamplerKind::Strata24Bsdf, SamplerKind::Cosine}) {
         for (bool nee : {false, true}) {
             CAPTURE(samplerName(sampler));
             CAPTURE(nee);
@@ -94,9 +94,11 @@ TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 stan
             const auto estimate = test::estimateMean(test::pixelEstimates(integrator, rayOntoCube(5), 64, 4, 11));
             CHECK(std::abs(estimate.mean - 0.6) < 4.0 * estimate.standardError + 1e-6);
             // Without light samples the cosine sampler is exact per path, and strata24-cosine(-qmc)
-            // per pass: its strata's weights 24 PSA_i rho / pi average to rho over the 24.
+            // per pass: its strata's weights 24 PSA_i rho / pi average to rho over the 24; so is
+            // strata24-bsdf on this Lambertian cube.
             const bool exact = !nee && (sampler == SamplerKind::Cosine || sampler == SamplerKind::Strata24Cosine ||
-                                        sampler == SamplerKind::Strata24CosineQmc);
+                                        sampler == SamplerKind::Strata24CosineQmc ||
+                                        sampler == SamplerKind::Strata24Bsdf);
             CHECK((estimate.standardError == 0.0) == exact);
         }
     }

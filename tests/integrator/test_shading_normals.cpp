@@ -66,7 +66,7 @@ TEST_CASE("shading normals: a plane with tilted normals receives pi (1 + cos 60)
     const double exact = kAlbedo * (1.0 + 0.5) / 2.0;  // rho / pi * pi (1 + cos beta) / 2
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
                                 SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc,
-                                SamplerKind::Strata24CosineQmc, SamplerKind::Bsdf}) {
+                                SamplerKind::Strata24CosineQmc, SamplerKind::Strata24Bsdf, SamplerKind::Bsdf}) {
         for (bool nee : {false, true}) {
             CAPTURE(samplerName(sampler));
             CAPTURE(nee);
@@ -81,7 +81,8 @@ TEST_CASE("shading normals: a plane with tilted normals receives pi (1 + cos 60)
 TEST_CASE("shading normals: nothing leaks through the surface from a light below it") {
     const Scene scene(tiltedPlane(noSky(), true));
     uint64_t rays = 0;
-    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine, SamplerKind::Bsdf}) {
+    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
+                                SamplerKind::Strata24Bsdf, SamplerKind::Bsdf}) {
         for (bool nee : {false, true}) {
             const PathIntegrator integrator(scene, {3, sampler, nee});
             double total = 0.0;

@@ -22,6 +22,7 @@ namespace {
 constexpr SamplerKind kAllSamplers[] = {SamplerKind::Uniform,        SamplerKind::Strata24,
                                         SamplerKind::Cosine,         SamplerKind::Strata24Cosine,
                                         SamplerKind::Strata24Qmc,    SamplerKind::Strata24CosineQmc,
+                                        SamplerKind::Strata24Bsdf,
                                         SamplerKind::Bsdf};
 // A correct estimator fails a 4.5-sigma check with probability 7e-6.
 constexpr double kSigmas = 4.5;
