@@ -279,7 +279,7 @@ void addBenchCommand(CLI::App& app) {
                   "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");
     sub->add_option("--only", command->only,
                     "Run this section alone, whatever the other options leave out: errors, throughput, "
-                    "embree (--vs-embree), viewer, real-scenes or ranks");
+                    "embree (--vs-embree), cycles (--vs-cycles), viewer, real-scenes or ranks");
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
     sub->callback([command] { command->run(); });

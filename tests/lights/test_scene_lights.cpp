@@ -59,12 +59,20 @@ TEST_CASE("scene lights: a scene without emitters gets the default sky, or none 
     CHECK_FALSE(lights.litByDefault());
 }
 
-TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
+namespace {
+// A unit square emitting Le = 2: power 2 pi, bounding radius 1/sqrt 2.
+MeshData unitLampQuad() {
     Material lamp;
     lamp.emission = glm::vec3(2.0f);
     MeshData mesh;
     mesh.materials = {lamp};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // power 2 pi, radius 1/sqrt 2
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
+    return mesh;
+}
+}  // namespace
+
+TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
+    MeshData mesh = unitLampQuad();
     mesh.environment.kind = Environment::Kind::Uniform;
     mesh.environment.radiance = glm::vec3(1.0f / kPi);                   // power pi (1/2) 4 pi / pi = 2 pi
     const SceneLights lights(mesh);
@@ -75,11 +83,7 @@ TEST_CASE("scene lights: an environment comes after the triangles' lights and is
 }
 
 TEST_CASE("scene lights: a new environment replaces the old one's light alone and re-weighs the choice") {
-    Material lamp;
-    lamp.emission = glm::vec3(2.0f);
-    MeshData mesh;
-    mesh.materials = {lamp};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // power 2 pi, radius 1/sqrt 2
+    MeshData mesh = unitLampQuad();
     SceneLights lights(mesh);  // no environment given: the lamp keeps the outside black
     REQUIRE(lights.size() == 2);
     const Light* triangleLight = &lights.light(0);
