@@ -66,10 +66,32 @@ std::string knownSceneExtensions() {
     return known;
 }
 
+namespace {
+// Every warning as lines of their own, none empty: a loader's message may carry a library's
+// multi-line text or a name read from the file with its control characters.
+void splitIntoLines(std::vector<std::string>& warnings, size_t from) {
+    std::vector<std::string> lines(warnings.begin(), warnings.begin() + static_cast<std::ptrdiff_t>(from));
+    for (size_t i = from; i < warnings.size(); ++i) {
+        size_t start = 0;
+        const std::string& text = warnings[i];
+        while (start <= text.size()) {
+            size_t end = text.find_first_of("\r\n", start);
+            if (end == std::string::npos) end = text.size();
+            if (end > start) lines.push_back(text.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+    warnings = std::move(lines);
+}
+}  // namespace
+
 ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report) {
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
-    return format.parse(bundle, report);
+    const size_t before = report ? report->warnings.size() : 0;
+    ParsedScene parsed = format.parse(bundle, report);
+    if (report) splitIntoLines(report->warnings, before);
+    return parsed;
 }
 
 MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report) {

@@ -63,7 +63,7 @@ TEST_CASE("an EXR texture is read through OpenEXR as linear values") {
 }
 
 TEST_CASE("bytes no decoder reads are refused with the file's name") {
-    for (const std::string bytes : {std::string(), std::string("not an image"), std::string("\x89PNG\r\n\x1a\n\0\0", 10)}) {
+    for (const std::string& bytes : {std::string(), std::string("not an image"), std::string("\x89PNG\r\n\x1a\n\0\0", 10)}) {
         try {
             decodeTexture(bytes, "bad.png", TextureEncoding::Colour);
             FAIL("decoded");
