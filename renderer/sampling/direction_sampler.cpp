@@ -91,7 +91,7 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
             } else {
                 d = sampleStratumCosine(id, samples.stratumSequencePoint(bounce));
             }
-            const float pdf = directionPdf(kind, bsdf, wo, d);
+            const float pdf = (1.0f - pSpecular) * stratumCosinePdf(d) + pSpecular * bsdf.specularPdf(wo, d);
             if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};
             return {d, pdf, bsdf.evaluate(wo, d) * (d.z / pdf), stratum};
         }
