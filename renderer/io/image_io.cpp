@@ -135,6 +135,20 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
     });
 }
 
+void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name) {
+    constexpr long long kMaxPixels = 1LL << 28;
+    constexpr long long kMaxPixelsPerByte = 8 * 1032;
+    const std::string size = std::to_string(width) + " x " + std::to_string(height);
+    if (width < 1 || height < 1 || width > kMaxPixels / height) {
+        throw Error(name + ": unreasonable image size " + size);
+    }
+    const auto leastBytes = static_cast<size_t>((width * height + kMaxPixelsPerByte - 1) / kMaxPixelsPerByte);
+    if (fileBytes < leastBytes) {
+        throw Error(name + ": a " + size + " image cannot be stored in " + std::to_string(fileBytes) +
+                    " bytes (truncated or corrupt)");
+    }
+}
+
 Image readExr(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
     return readExr(readTextFile(path, "EXR file"), path.string());
@@ -145,12 +159,12 @@ Image readExr(std::string_view bytes, const std::string& name) {
         MemoryStream stream(bytes, name);
         Imf::InputFile in(stream);
         const Imath::Box2i window = in.header().dataWindow();
+        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+        requirePlausibleImageSize(width, height, bytes.size(), name);
         Image image;
-        image.width = window.max.x - window.min.x + 1;
-        image.height = window.max.y - window.min.y + 1;
-        if (image.width < 1 || image.height < 1 || image.width > 65536 || image.height > 65536) {
-            throw Error(name + ": unreasonable image size");
-        }
+        image.width = static_cast<int>(width);
+        image.height = static_cast<int>(height);
         for (const char* channel : {"R", "G", "B"}) {
             if (!in.header().channels().findChannel(channel)) {
                 throw Error(name + ": no " + channel + " channel");

@@ -12,9 +12,6 @@
 namespace strata {
 namespace {
 
-// Larger textures than this many texels are refused rather than allocated (a 16k x 16k image).
-constexpr size_t kMaxTexels = size_t{1} << 28;
-
 bool isExr(std::string_view bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0; }
 
 Texture decodeExr(std::string_view bytes, const std::string& name) {
@@ -53,9 +50,7 @@ Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEn
     if (stbi_is_hdr_from_memory(data, size)) throw fail("Radiance HDR textures are not read; use EXR");
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(data, size, &width, &height, &channels)) throw fail(stbi_failure_reason());
-    if (width < 1 || height < 1 || static_cast<size_t>(width) * static_cast<size_t>(height) > kMaxTexels) {
-        throw fail("unreasonable image size");
-    }
+    requirePlausibleImageSize(width, height, bytes.size(), name);
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 0), stbi_image_free);
     if (!pixels) throw fail(stbi_failure_reason());

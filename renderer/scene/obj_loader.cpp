@@ -272,7 +272,10 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         const std::string_view key = words[0];
         if (key == "newmtl") {
             tinyobjText += "newmtl " + materialToken(materials.size()) + "\n";
-            materials.push_back({restOfLine(words), name, line});
+            MtlMaterial& material = materials.emplace_back();
+            material.name = restOfLine(words);
+            material.file = name;
+            material.line = line;
             return;
         }
         const bool colour = key == "Kd" || key == "Ke" || key == "Ks";

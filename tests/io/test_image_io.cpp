@@ -73,6 +73,18 @@ TEST_CASE("image io: a failed write leaves an existing file untouched") {
     }
 }
 
+TEST_CASE("image io: an image's size must fit 2^28 pixels and its file's bytes") {
+    CHECK_NOTHROW(requirePlausibleImageSize(16384, 16384, 1 << 20, "big.exr"));
+    CHECK_NOTHROW(requirePlausibleImageSize(8256, 1, 1, "dense.png"));
+    CHECK_THROWS_WITH_AS(requirePlausibleImageSize(8257, 1, 1, "dense.png"),
+                         "dense.png: a 8257 x 1 image cannot be stored in 1 bytes (truncated or corrupt)", Error);
+    CHECK_THROWS_WITH_AS(requirePlausibleImageSize(16385, 16384, size_t{1} << 40, "huge.exr"),
+                         "huge.exr: unreasonable image size 16385 x 16384", Error);
+    CHECK_THROWS_WITH_AS(requirePlausibleImageSize(0, 5, 100, "empty.exr"), "empty.exr: unreasonable image size 0 x 5",
+                         Error);
+    CHECK_THROWS_AS(requirePlausibleImageSize(-4, -4, 100, "negative.exr"), Error);
+}
+
 TEST_CASE("tonemap: sRGB encoding and curves at known points") {
     CHECK(encodeSrgb(0.0f) == 0.0f);
     CHECK(encodeSrgb(1.0f) == doctest::Approx(1.0f));
