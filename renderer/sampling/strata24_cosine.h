@@ -15,11 +15,17 @@ namespace strata {
 // PSA of stratum `id` (exact closed forms above, in double precision).
 double stratumProjectedSolidAngle(int id);
 
-// An exact map of [0,1)^2 onto stratum `id` with density cos(theta) / PSA_id (Malley's method:
-// the stratum projects onto a region of the unit disk, sampled uniformly; notes section 3). The
-// azimuth is inverted in closed form for the pole and middle classes and by a safeguarded Newton
-// iteration for the equator class, whose CDF is transcendental. Output: unit length, z >= 0,
-// inside the stratum.
+// A map of [0,1)^2 onto stratum `id` with density cos(theta) / PSA_id (Malley's method: the
+// stratum projects onto a region of the unit disk, sampled uniformly; notes section 3). The
+// azimuth is inverted in closed form for the pole and middle classes; the equator class's CDF is
+// transcendental, and its inverse is interpolated from a table of the exact one (safeguarded
+// Newton), within 1e-8 in tan(phi): exact to float precision. Output: unit length, z >= 0, inside
+// the stratum.
 glm::vec3 sampleStratumCosine(int id, glm::vec2 u);
+
+// The equator class's azimuth inverse for u in [0, 1]: tan(phi) with F(phi) = u PSA, as sampled
+// (interpolated) and exact (Newton).
+double equatorTanPhi(double u);
+double equatorTanPhiExact(double u);
 
 }  // namespace strata

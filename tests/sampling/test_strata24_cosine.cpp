@@ -101,3 +101,15 @@ TEST_CASE("strata24-cosine: the density inside each stratum is cos / PSA (chi-sq
         CHECK(chi2 < dof + 5.0 * std::sqrt(2.0 * dof) + 10.0);
     }
 }
+
+TEST_CASE("strata24-cosine: the equator azimuth table is the exact inverse to 1e-8") {
+    double worst = 0.0;
+    for (int i = 0; i <= 20000; ++i) {
+        const double u = i / 20000.0;
+        worst = std::max(worst, std::abs(equatorTanPhi(u) - equatorTanPhiExact(u)));
+    }
+    for (double u : {0.0, 1e-12, 1e-6, 0.999999, 1.0}) worst = std::max(worst, std::abs(equatorTanPhi(u) - equatorTanPhiExact(u)));
+    CHECK(worst < 1e-8);
+    CHECK(equatorTanPhi(0.0) == 0.0);
+    CHECK(equatorTanPhi(1.0) == doctest::Approx(1.0).epsilon(1e-12));
+}
