@@ -7,7 +7,7 @@
 namespace strata {
 namespace {
 
-uint32_t reverseBits(uint32_t v) {
+constexpr uint32_t reverseBits(uint32_t v) {
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
     v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
     v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
@@ -20,7 +20,7 @@ uint32_t reverseBits(uint32_t v) {
 // function of bits 0..k-1 (an even multiplier never moves a bit onto itself). Applied to the
 // bit-reversed value, "below" becomes "more significant": a nested uniform scramble. The
 // multipliers are Burley 2020's, which make each bit's flips close to independent.
-uint32_t scrambleUpward(uint32_t x, uint32_t seed) {
+constexpr uint32_t scrambleUpward(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
@@ -72,8 +72,16 @@ constexpr GeneratorColumns thirdDimensionColumns() {
     return columns;
 }
 
+// The same matrix with its output bits reversed: reverseBits(M x) as one product.
+constexpr GeneratorColumns reversedOutput(GeneratorColumns columns) {
+    for (uint32_t& column : columns) column = reverseBits(column);
+    return columns;
+}
+
 constexpr ByteImages kSecondDimension = byteImages(secondDimensionColumns());
 constexpr ByteImages kThirdDimension = byteImages(thirdDimensionColumns());
+constexpr ByteImages kSecondDimensionReversed = byteImages(reversedOutput(secondDimensionColumns()));
+constexpr ByteImages kThirdDimensionReversed = byteImages(reversedOutput(thirdDimensionColumns()));
 
 uint32_t multiply(const ByteImages& images, uint32_t index) {
     return images[0][index & 0xffu] ^ images[1][(index >> 8) & 0xffu] ^
@@ -112,25 +120,37 @@ uint32_t owenScramble(uint32_t value, uint32_t seed) {
 // (its high bits depend only on high bits), and every aligned block of a (t,s)-sequence is a
 // (t,m,s)-net: the shuffled prefixes stay nets. One index shuffle per stream keeps its
 // coordinates together.
+//
+// Each coordinate is owenScramble(sobol(shuffled)) = reverse(scrambleUpward(reverse(sobol(shuffled)))),
+// computed with the inner reversal folded in: reverse(first coordinate) is the shuffled index
+// itself, and reverse(M x) is a product with the bit-reversed tables, which saves three of seven
+// bit reversals per 2D point.
+namespace {
+
+float scrambledCoordinate(uint32_t reversedCoordinate, uint32_t seed) {
+    return toUnitFloat(reverseBits(scrambleUpward(reversedCoordinate, seed)));
+}
+
+}  // namespace
+
 glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey) {
     const StreamSeeds seeds(streamKey);
     const uint32_t shuffled = owenScramble(index, seeds.index());
-    return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0))),
-            toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), seeds.coordinate(1)))};
+    return {scrambledCoordinate(shuffled, seeds.coordinate(0)),
+            scrambledCoordinate(multiply(kSecondDimensionReversed, shuffled), seeds.coordinate(1))};
 }
 
 float scrambledSobolValue(uint32_t index, uint64_t streamKey) {
     const StreamSeeds seeds(streamKey);
-    const uint32_t shuffled = owenScramble(index, seeds.index());
-    return toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0)));
+    return scrambledCoordinate(owenScramble(index, seeds.index()), seeds.coordinate(0));
 }
 
 glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey) {
     const StreamSeeds seeds(streamKey);
     const uint32_t shuffled = owenScramble(index, seeds.index());
-    return {toUnitFloat(owenScramble(sobolFirstCoordinate(shuffled), seeds.coordinate(0))),
-            toUnitFloat(owenScramble(sobolSecondCoordinate(shuffled), seeds.coordinate(1))),
-            toUnitFloat(owenScramble(sobolThirdCoordinate(shuffled), seeds.coordinate(2)))};
+    return {scrambledCoordinate(shuffled, seeds.coordinate(0)),
+            scrambledCoordinate(multiply(kSecondDimensionReversed, shuffled), seeds.coordinate(1)),
+            scrambledCoordinate(multiply(kThirdDimensionReversed, shuffled), seeds.coordinate(2))};
 }
 
 }  // namespace strata
