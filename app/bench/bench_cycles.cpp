@@ -166,14 +166,21 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
                            cyclesCommandLine(script, parameters), readSeconds, {}, {}, {}}});
     }
 
-    // The defaults, the defaults with roulette from bounce 2 (the lever that trades the most
-    // variance for time), and plain BSDF sampling with it.
+    // The defaults; each of their levers turned off alone (what it gains is its row against the
+    // defaults'); roulette from bounce 2, the setting that trades the most variance for time; and
+    // plain BSDF sampling with it.
     std::vector<StrataConfig> configs = {{defaultsLabel(), {}},
+                                         {"Strata defaults --no-nee", {}},
+                                         {"Strata defaults --roulette-depth -1", {}},
+                                         {"Strata defaults --sampler bsdf (no strata)", {}},
                                          {"Strata --roulette-depth 2", {}},
                                          {"Strata --sampler bsdf --roulette-depth 2", {}}};
-    configs[1].options.rouletteDepth = 2;
-    configs[2].options.sampler = "bsdf";
-    configs[2].options.rouletteDepth = 2;
+    configs[1].options.nee = false;
+    configs[2].options.rouletteDepth = -1;
+    configs[3].options.sampler = "bsdf";
+    configs[4].options.rouletteDepth = 2;
+    configs[5].options.sampler = "bsdf";
+    configs[5].options.rouletteDepth = 2;
     for (StrataConfig& config : configs) {
         config.options.scene = settings.scene.string();
         config.options.width = settings.width;
