@@ -46,7 +46,6 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
     RenderOptions options;
     options.scene = settings.scene.string();
-    options.sampler = "strata24";
     options.depth = settings.depth;
     options.threads = threads;
     RenderOptions batch = options;
@@ -86,10 +85,10 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
                cell("%.1f", median(viewReports.p95))});
     writeTextFile(settings.outDir / "viewer.csv", table.csv());
     return kTitle +
-           cell("%s, %dx%d, %d spp, depth %d, strata24, %s; whole processes including start-up "
-                "and loading, runs alternated.\n\n",
+           cell("%s, %dx%d, %d spp, depth %d, the default sampler (%s) and transport, %s; whole "
+                "processes including start-up and loading, runs alternated.\n\n",
                 settings.scene.filename().string().c_str(), settings.width, settings.height, settings.spp,
-                settings.depth, threadsText(threads).c_str()) +
+                settings.depth, options.sampler.c_str(), threadsText(threads).c_str()) +
            table.markdown() +
            cell("\nViewer throughput / `strata render` throughput: **%.3f** (target at least 0.9).\n",
                 renderSeconds / viewSeconds) +
