@@ -20,6 +20,10 @@ constexpr uint64_t kSequenceTag = 0x736f626f6cull;       // "sobol"
 PathSamples::PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step)
     : pixelKey_(hashCombine(mixBits(seed), pixel)),
       pathKey_(hashCombine(hashCombine(pixelKey_, pass), static_cast<uint64_t>(step))),
+      lightKey_(hashCombine(pixelKey_, kLightTag)),
+      lobeKey_(hashCombine(pixelKey_, kLobeTag)),
+      rouletteKey_(hashCombine(pixelKey_, kRouletteTag)),
+      sequenceKey_(hashCombine(pixelKey_, kSequenceTag)),
       pixelIndex_(pass * static_cast<uint32_t>(kStrataCount) + static_cast<uint32_t>(step)),
       pass_(pass),
       step_(step) {}
@@ -30,8 +34,8 @@ glm::vec2 PathSamples::point(uint64_t dimension) const {
     return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
-uint64_t PathSamples::streamKey(uint64_t tag, int bounce) const {
-    return hashCombine(hashCombine(pixelKey_, tag), static_cast<uint64_t>(bounce));
+uint64_t PathSamples::streamKey(uint64_t tagKey, int bounce) {
+    return hashCombine(tagKey, static_cast<uint64_t>(bounce));
 }
 
 glm::vec2 PathSamples::pixelJitter() const {
@@ -48,22 +52,22 @@ int PathSamples::stratum(int bounce) const {
 }
 
 glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {
-    const uint64_t stream = hashCombine(streamKey(kSequenceTag, bounce), static_cast<uint64_t>(stratum(bounce)));
+    const uint64_t stream = hashCombine(streamKey(sequenceKey_, bounce), static_cast<uint64_t>(stratum(bounce)));
     return scrambledSobolPoint(pass_, stream);
 }
 
 float PathSamples::lobeChoice(int bounce) const {
-    return scrambledSobolValue(pixelIndex_, streamKey(kLobeTag, bounce));
+    return scrambledSobolValue(pixelIndex_, streamKey(lobeKey_, bounce));
 }
 
 float PathSamples::roulette(int bounce) const {
-    return scrambledSobolValue(pixelIndex_, streamKey(kRouletteTag, bounce));
+    return scrambledSobolValue(pixelIndex_, streamKey(rouletteKey_, bounce));
 }
 
 glm::vec3 PathSamples::lightSample(int bounce) const {
     // The point on the emitter takes the (0,2)-sequence pair, the emitter choice the third
     // coordinate: jointly a (1,3)-sequence, so the choice and the point are stratified together.
-    const glm::vec3 p = scrambledSobolPoint3(pixelIndex_, streamKey(kLightTag, bounce));
+    const glm::vec3 p = scrambledSobolPoint3(pixelIndex_, streamKey(lightKey_, bounce));
     return {p.z, p.x, p.y};
 }
 

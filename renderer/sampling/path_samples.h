@@ -54,11 +54,14 @@ public:
 private:
     // A uniform random point of the path: a hash of the path's key and `dimension`.
     glm::vec2 point(uint64_t dimension) const;
-    // The key of the pixel's stream for the value `tag` at `bounce`.
-    uint64_t streamKey(uint64_t tag, int bounce) const;
+    // The key of the pixel's stream at `bounce` for the value whose tag key is `tagKey` (one of
+    // those below).
+    static uint64_t streamKey(uint64_t tagKey, int bounce);
 
     uint64_t pixelKey_;
     uint64_t pathKey_;
+    // The pixel's key with each value's tag folded in, once per path rather than at every bounce.
+    uint64_t lightKey_, lobeKey_, rouletteKey_, sequenceKey_;
     uint32_t pixelIndex_;  // the path's number n = 24 pass + step within the pixel's streams
     uint32_t pass_;
     int step_;
