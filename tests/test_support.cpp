@@ -36,6 +36,13 @@ std::string fileBytes(const std::filesystem::path& path) {
     return bytes.str();
 }
 
+std::string forgedTga() {
+    std::string tga(18, '\0');
+    tga[2] = 10;  // run-length encoded true colour
+    tga[12] = '\x30', tga[13] = '\x0a', tga[14] = '\x76', tga[15] = '\x74', tga[16] = 32;
+    return tga + std::string(8, '\x7f');
+}
+
 CommandResult runCommand(const std::string& commandLine) {
     const auto dir = scratchDir("run");
     const auto outFile = dir / "stdout";

@@ -50,9 +50,12 @@ struct CommandResult {
     std::string out;  // stdout
     std::string err;  // stderr
 };
-// Runs a shell command line, capturing its output.
 // The file's bytes; empty when it cannot be read.
 std::string fileBytes(const std::filesystem::path& path);
+// An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
+// would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
+std::string forgedTga();
+// Runs a shell command line, capturing its output.
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);

@@ -30,6 +30,13 @@ float stratumCosinePdf(const glm::vec3& wi) {
     return wi.z / static_cast<float>(kStrataCount * stratumProjectedSolidAngle(classifyStratum(wi)));
 }
 
+// strata24-bsdf's density of `wi`: the cosine-weighted strata with probability 1 - pSpecular, the
+// specular lobe with pSpecular (the BSDF's specularProbability(wo), which the caller has).
+float strataBsdfMixturePdf(const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi, float pSpecular) {
+    const float diffuse = (1.0f - pSpecular) * stratumCosinePdf(wi);
+    return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
+}
+
 // A cosine-weighted direction in stratum `stratum` from the point `u`: weight 24 PSA_i f.
 SampledDirection cosineStratumSample(const LayeredBsdf& bsdf, const glm::vec3& wo, int stratum, glm::vec2 u) {
     const glm::vec3 d = sampleStratumCosine(stratum, u);
@@ -91,7 +98,7 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
             } else {
                 d = sampleStratumCosine(id, samples.stratumSequencePoint(bounce));
             }
-            const float pdf = (1.0f - pSpecular) * stratumCosinePdf(d) + pSpecular * bsdf.specularPdf(wo, d);
+            const float pdf = strataBsdfMixturePdf(bsdf, wo, d, pSpecular);
             if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};
             return {d, pdf, bsdf.evaluate(wo, d) * (d.z / pdf), stratum};
         }
@@ -118,11 +125,7 @@ float directionPdf(SamplerKind kind, const LayeredBsdf& bsdf, const glm::vec3& w
         case SamplerKind::Cosine: return cosineHemispherePdf(wi);
         case SamplerKind::Strata24Cosine:
         case SamplerKind::Strata24CosineQmc: return stratumCosinePdf(wi);
-        case SamplerKind::Strata24Bsdf: {
-            const float pSpecular = bsdf.specularProbability(wo);
-            const float diffuse = (1.0f - pSpecular) * stratumCosinePdf(wi);
-            return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
-        }
+        case SamplerKind::Strata24Bsdf: return strataBsdfMixturePdf(bsdf, wo, wi, bsdf.specularProbability(wo));
         case SamplerKind::Bsdf: return bsdf.pdf(wo, wi);
     }
     return 0.0f;

@@ -72,14 +72,13 @@ constexpr GeneratorColumns thirdDimensionColumns() {
     return columns;
 }
 
-// The same matrix with its output bits reversed: reverseBits(M x) as one product.
+// The same matrix with its output bits reversed: reverseBits(M x) as one product. The scrambled
+// points need the coordinates bit-reversed (below), so the tables hold that form.
 constexpr GeneratorColumns reversedOutput(GeneratorColumns columns) {
     for (uint32_t& column : columns) column = reverseBits(column);
     return columns;
 }
 
-constexpr ByteImages kSecondDimension = byteImages(secondDimensionColumns());
-constexpr ByteImages kThirdDimension = byteImages(thirdDimensionColumns());
 constexpr ByteImages kSecondDimensionReversed = byteImages(reversedOutput(secondDimensionColumns()));
 constexpr ByteImages kThirdDimensionReversed = byteImages(reversedOutput(thirdDimensionColumns()));
 
@@ -108,9 +107,9 @@ struct StreamSeeds {
 
 uint32_t sobolFirstCoordinate(uint32_t index) { return reverseBits(index); }
 
-uint32_t sobolSecondCoordinate(uint32_t index) { return multiply(kSecondDimension, index); }
+uint32_t sobolSecondCoordinate(uint32_t index) { return reverseBits(multiply(kSecondDimensionReversed, index)); }
 
-uint32_t sobolThirdCoordinate(uint32_t index) { return multiply(kThirdDimension, index); }
+uint32_t sobolThirdCoordinate(uint32_t index) { return reverseBits(multiply(kThirdDimensionReversed, index)); }
 
 uint32_t owenScramble(uint32_t value, uint32_t seed) {
     return reverseBits(scrambleUpward(reverseBits(value), seed));

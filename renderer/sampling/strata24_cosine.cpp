@@ -75,14 +75,15 @@ public:
         for (int i = 0; i <= kIntervals; ++i) {
             const double c = static_cast<double>(i) / kIntervals;
             if (i == 0) {
-                nodes_[0] = {0.0, std::cbrt(6.0 * kEquatorPsa)};
+                nodes_[0] = {0.0, std::cbrt(6.0 * kEquatorPsa) / kIntervals};
                 continue;
             }
             const double phi = invertEquatorCdf(kEquatorPsa * c * c * c);
             const double s2 = std::sin(phi) * std::sin(phi);
             const double sec2 = 1.0 / (std::cos(phi) * std::cos(phi));
             // dt/dc = sec^2(phi) dphi/dF dF/dc, with dphi/dF = 2 (1 + s^2) / s^2, dF/dc = 3 PSA c^2.
-            nodes_[static_cast<size_t>(i)] = {std::tan(phi), sec2 * 2.0 * (1.0 + s2) / s2 * 3.0 * kEquatorPsa * c * c};
+            const double slope = sec2 * 2.0 * (1.0 + s2) / s2 * 3.0 * kEquatorPsa * c * c;
+            nodes_[static_cast<size_t>(i)] = {std::tan(phi), slope / kIntervals};
         }
     }
 
@@ -90,19 +91,18 @@ public:
         const double x = std::cbrt(u) * kIntervals;
         const int i = std::min(static_cast<int>(x), kIntervals - 1);
         const double s = x - i;
-        const double h = 1.0 / kIntervals;
         const Node& a = nodes_[static_cast<size_t>(i)];
         const Node& b = nodes_[static_cast<size_t>(i) + 1];
         const double s2 = s * s;
         const double s3 = s2 * s;
-        return (2.0 * s3 - 3.0 * s2 + 1.0) * a.value + (s3 - 2.0 * s2 + s) * h * a.slope +
-               (3.0 * s2 - 2.0 * s3) * b.value + (s3 - s2) * h * b.slope;
+        return (2.0 * s3 - 3.0 * s2 + 1.0) * a.value + (s3 - 2.0 * s2 + s) * a.intervalSlope +
+               (3.0 * s2 - 2.0 * s3) * b.value + (s3 - s2) * b.intervalSlope;
     }
 
 private:
     struct Node {
         double value;
-        double slope;
+        double intervalSlope;  // dt/dc times the interval's width, as the Hermite basis takes it
     };
     std::array<Node, kIntervals + 1> nodes_{};
 };

@@ -198,14 +198,6 @@ struct ToleratedCase {
 };
 
 const std::string kQuad = "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\n";
-// An RLE true-colour TGA header for 2608 x 29814 texels with 8 bytes of data, 26 in all.
-std::string forgedTga() {
-    std::string tga(18, '\0');
-    tga[2] = 10;
-    tga[12] = '\x30', tga[13] = '\x0a', tga[14] = '\x76', tga[15] = '\x74', tga[16] = 32;
-    return tga + std::string(8, '\x7f');
-}
-
 const std::vector<ToleratedCase> kToleratedCases = {
     {"OBJ usemtl of an undefined material",
      {{"s.obj", "mtllib s.mtl\n" + kQuad + "usemtl red\nf 1 3 2\nusemtl white\nf 1 4 3\n"}},
@@ -241,7 +233,7 @@ const std::vector<ToleratedCase> kToleratedCases = {
      {"s.mtl:4: map_Kd: bad.png: cannot decode the texture (unknown image type); using the factor alone"},
      "2 emitting"},
     {"MTL texture whose header claims more texels than its file holds",
-     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd t.tga\n"}, {"t.tga", forgedTga()}},
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd t.tga\n"}, {"t.tga", test::forgedTga()}},
      {"s.mtl:4: map_Kd: t.tga: a 2608 x 29814 image cannot be stored in 26 bytes (truncated or corrupt); using "
       "the factor alone"},
      "2 emitting"},

@@ -74,13 +74,7 @@ TEST_CASE("bytes no decoder reads are refused with the file's name") {
 }
 
 TEST_CASE("a header claiming more texels than its file can hold is refused before any allocation") {
-    // An RLE true-colour TGA header for 2608 x 29814 texels at 32 bits, followed by 8 bytes: stb
-    // would decode it, padding the missing packets, into 1.2 GB of texels.
-    std::string tga(18, '\0');
-    tga[2] = 10;
-    tga[12] = '\x30', tga[13] = '\x0a', tga[14] = '\x76', tga[15] = '\x74', tga[16] = 32;
-    tga += std::string(8, '\x7f');
-    CHECK_THROWS_WITH_AS(decodeTexture(tga, "forged.tga", TextureEncoding::Colour),
+    CHECK_THROWS_WITH_AS(decodeTexture(test::forgedTga(), "forged.tga", TextureEncoding::Colour),
                          "forged.tga: a 2608 x 29814 image cannot be stored in 26 bytes (truncated or corrupt)",
                          Error);
     // A genuine image compressed far below a byte a texel still loads.
