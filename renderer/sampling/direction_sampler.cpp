@@ -4,6 +4,7 @@
 #include "util/name_table.h"
 #include "sampling/strata24.h"
 #include "sampling/strata24_cosine.h"
+#include "sampling/strata24_warped.h"
 
 namespace strata {
 namespace {
@@ -30,10 +31,11 @@ float stratumCosinePdf(const glm::vec3& wi) {
     return wi.z / static_cast<float>(kStrataCount * stratumProjectedSolidAngle(classifyStratum(wi)));
 }
 
-// strata24-bsdf's density of `wi`: the cosine-weighted strata with probability 1 - pSpecular, the
-// specular lobe with pSpecular (the BSDF's specularProbability(wo), which the caller has).
+// strata24-bsdf's density of `wi`: the warped strata (cosine-weighted, marginally over the path's
+// stratum) with probability 1 - pSpecular, the specular lobe with pSpecular (the BSDF's
+// specularProbability(wo), which the caller has).
 float strataBsdfMixturePdf(const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi, float pSpecular) {
-    const float diffuse = (1.0f - pSpecular) * stratumCosinePdf(wi);
+    const float diffuse = (1.0f - pSpecular) * cosineHemispherePdf(wi);
     return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
 }
 
@@ -85,8 +87,11 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
         case SamplerKind::Strata24Bsdf: {
             const int id = samples.stratum(bounce);
             const float pSpecular = bsdf.specularProbability(wo);
-            // A Lambertian surface: strata24-cosine-qmc, with its exact weight.
-            if (pSpecular == 0.0f) return cosineStratumSample(bsdf, wo, id, samples.stratumSequencePoint(bounce));
+            // A Lambertian surface: the warped stratum, with cosine sampling's exact weight.
+            if (pSpecular == 0.0f) {
+                return hemisphereSample(bsdf, wo, sampleWarpedStratum(id, samples.stratumSequencePoint(bounce)),
+                                        kPi, id);
+            }
             // The specular lobe's direction lies in no particular stratum.
             int stratum = id;
             glm::vec3 d;
@@ -96,7 +101,7 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
                 d = *specular;
                 stratum = -1;
             } else {
-                d = sampleStratumCosine(id, samples.stratumSequencePoint(bounce));
+                d = sampleWarpedStratum(id, samples.stratumSequencePoint(bounce));
             }
             const float pdf = strataBsdfMixturePdf(bsdf, wo, d, pSpecular);
             if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};

@@ -17,10 +17,12 @@
 //                     refine every stratum (the paper's future work);
 //   strata24-cosine-qmc - strata24-cosine with the points of strata24-qmc: cosine-weighted inside
 //                     each stratum, each stratum refined by its Sobol' stream;
-//   strata24-bsdf   - the flagship: strata24-cosine-qmc for the diffuse layer, the specular
-//                     layer by GGX visible normals, chosen as bsdf chooses its lobe; densities
-//                     are the mixture's, so it is unbiased for every material, and on a
-//                     Lambertian surface it is strata24-cosine-qmc exactly;
+//   strata24-bsdf   - the flagship: for the diffuse layer one direction per pass in each of the
+//                     24 strata carried onto the cosine-weighted hemisphere (strata24_warped.h:
+//                     every warped stratum holds 1/24 of the cosine measure, so the weight is
+//                     f pi, as cosine sampling's), refined by the points of strata24-qmc; the
+//                     specular layer by GGX visible normals, chosen as bsdf chooses its lobe;
+//                     densities are the mixture's, so it is unbiased for every material;
 //   bsdf            - importance sampling of the whole material (material.h: cosine for the
 //                     Lambertian layer, GGX visible normals for the specular one).
 // All are unbiased for every path, so a partial pass is an unbiased estimate.
@@ -49,7 +51,8 @@ struct SampledDirection {
     float pdf;         // marginal density of `local` under the sampler (for MIS); 0 if no sample
     glm::vec3 weight;  // f_r(wo, local) cos(theta) / pdf; 0 when the sample is lost (below the
                        // surface), which still counts as a sample
-    int stratum;       // 0..23, or -1 when the sampler does not stratify
+    int stratum;       // 0..23, or -1 when the sampler does not stratify (for strata24-bsdf's
+                       // diffuse layer the direction lies in the stratum's warped image)
 };
 
 // The direction of bounce `bounce` of the path `samples` at a surface with material `bsdf`,

@@ -95,7 +95,7 @@ TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 stan
             CHECK(std::abs(estimate.mean - 0.6) < 4.0 * estimate.standardError + 1e-6);
             // Without light samples the cosine sampler is exact per path, and strata24-cosine(-qmc)
             // per pass: its strata's weights 24 PSA_i rho / pi average to rho over the 24; so is
-            // strata24-bsdf on this Lambertian cube.
+            // strata24-bsdf on this Lambertian cube, whose warped strata weigh exactly rho.
             const bool exact = !nee && (sampler == SamplerKind::Cosine || sampler == SamplerKind::Strata24Cosine ||
                                         sampler == SamplerKind::Strata24CosineQmc ||
                                         sampler == SamplerKind::Strata24Bsdf);
