@@ -167,20 +167,23 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     }
 
     // The defaults; each of their levers turned off alone (what it gains is its row against the
-    // defaults'); roulette from bounce 2, the setting that trades the most variance for time; and
-    // plain BSDF sampling with it.
+    // defaults'), the warp of the strata onto the cosine measure too (strata24-cosine-qmc is the
+    // same strata and points unwarped); roulette from bounce 2, the setting that trades the most
+    // variance for time; and plain BSDF sampling with it.
     std::vector<StrataConfig> configs = {{defaultsLabel(), {}},
                                          {"Strata defaults --no-nee", {}},
                                          {"Strata defaults --roulette-depth -1", {}},
                                          {"Strata defaults --sampler bsdf (no strata)", {}},
+                                         {"Strata defaults --sampler strata24-cosine-qmc (strata not warped)", {}},
                                          {"Strata --roulette-depth 2", {}},
                                          {"Strata --sampler bsdf --roulette-depth 2", {}}};
     configs[1].options.nee = false;
     configs[2].options.rouletteDepth = -1;
     configs[3].options.sampler = "bsdf";
-    configs[4].options.rouletteDepth = 2;
-    configs[5].options.sampler = "bsdf";
+    configs[4].options.sampler = "strata24-cosine-qmc";
     configs[5].options.rouletteDepth = 2;
+    configs[6].options.sampler = "bsdf";
+    configs[6].options.rouletteDepth = 2;
     for (StrataConfig& config : configs) {
         config.options.scene = settings.scene.string();
         config.options.width = settings.width;
