@@ -1,5 +1,6 @@
 #include "bench/bench_output.h"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <fstream>
@@ -35,12 +36,17 @@ std::string Table::markdown() const {
 }
 
 std::string cell(const char* format, ...) {
-    char buffer[256];
     va_list args;
     va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_list copy;
+    va_copy(copy, args);
+    // Measured first, so that a long sentence is never cut short.
+    const int length = std::vsnprintf(nullptr, 0, format, copy);
+    va_end(copy);
+    std::string text(static_cast<size_t>(std::max(length, 0)), '\0');
+    std::vsnprintf(text.data(), text.size() + 1, format, args);
     va_end(args);
-    return buffer;
+    return text;
 }
 
 std::string threadsText(int threads) {

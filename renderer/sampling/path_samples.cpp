@@ -47,8 +47,12 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
-    return schedule_->stratum(bounce);
+    if (bounce != stratumBounce_) {
+        if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
+        stratum_ = schedule_->stratum(bounce);
+        stratumBounce_ = bounce;
+    }
+    return stratum_;
 }
 
 glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {

@@ -66,8 +66,11 @@ private:
     uint32_t pass_;
     int step_;
     // The path's strata, worked out on the first stratum() call rather than at every bounce
-    // (and never for samplers that do not stratify).
+    // (and never for samplers that do not stratify), and the last bounce's stratum, which a
+    // bounce asks for twice (for the direction and for its stratum's Sobol' stream).
     mutable std::optional<PathSchedule> schedule_;
+    mutable int stratumBounce_ = -1;
+    mutable int stratum_ = 0;
 };
 
 }  // namespace strata

@@ -10,6 +10,7 @@
 
 #include "sampling/path_samples.h"
 #include "sampling/sobol.h"
+#include "sampling/stratum_schedule.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -173,4 +174,15 @@ TEST_CASE("path samples: a pixel's streams differ from its neighbour's") {
         equal += pathNumber(1, 0, n).pixelJitter() == pathNumber(2, 0, n).pixelJitter();
     }
     CHECK(equal == 0);
+}
+
+TEST_CASE("path samples: a path's strata are the schedule's, whatever order its bounces are asked in") {
+    // PathSamples keeps the last bounce's stratum: asking again, going back or skipping bounces
+    // must still give scheduledStratum's answer.
+    for (int step = 0; step < 24; ++step) {
+        const PathSamples samples(3, 41, 7, step);
+        for (int bounce : {0, 0, 1, 1, 4, 2, 2, 0, 9, 3, 3}) {
+            CHECK(samples.stratum(bounce) == scheduledStratum(samples.pixelKey(), 7, step, bounce));
+        }
+    }
 }
