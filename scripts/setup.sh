@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what Strata needs from Debian 12's packages (when missing) and builds it (Release).
 # Usage: bash scripts/setup.sh [--peers] [BUILD_DIR]   (default: build)
-#   --peers: also the renderers `strata bench --vs-embree` and `--vs-cycles` race against
-#            (embree-tools' pathtracer, blender); nothing else needs them.
+#   --peers: also what `strata bench` measures against: the renderers `--vs-embree` and
+#            `--vs-cycles` race (embree-tools' pathtracer, blender) and the real models of its
+#            "Real scenes" section (assimp-testmodels); nothing else needs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 peers=0
@@ -18,7 +19,7 @@ packages=(
   python3-glad xvfb xauth gnuplot-nox clang libclang-rt-14-dev
   dpkg-dev  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB)
 )
-if ((peers)); then packages+=(embree-tools blender); fi
+if ((peers)); then packages+=(embree-tools blender assimp-testmodels); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

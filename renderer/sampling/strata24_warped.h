@@ -8,9 +8,9 @@
 // W(T_i) holding exactly 1/24 of the projected solid angle pi. A point uniform in T_i lands
 // in W(T_i) with density 24 cos(theta) / pi, so one direction per warped stratum per pass is the
 // paper's stratified estimator with cosine importance: every sample's weight is f pi, as cosine
-// sampling's, and none of strata24-cosine's spread of 24 PSA_i across the strata (1.3 to 5.2 times
-// pi / 24, notes section 3), which stratification of an unequal partition at equal allocation
-// pays for in variance.
+// sampling's. strata24-cosine's weights 24 PSA_i f instead spread from 1.3 f to 5.2 f across the
+// strata (notes section 3): one sample in each of unequal strata is far from proportional
+// allocation, and that costs more variance than the stratification removes.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
