@@ -11,4 +11,4 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && "$strata" view --help >/dev/null
   exec "$strata" view "$scene" "$@"
 fi
 echo "run: no display; rendering headless instead" >&2
-"$strata" render "$scene" --spp 240 --depth 8 --sampler strata24 --nee --out cornell.png --out cornell.exr "$@"
+"$strata" render "$scene" --spp 240 --depth 8 --out cornell.png --out cornell.exr "$@"
