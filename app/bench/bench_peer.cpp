@@ -65,16 +65,17 @@ std::string runPeerComparison(const PeerSettings& settings) {
     const auto embreeImage = settings.outDir / "peer-embree.ppm";
     const auto log = settings.outDir / "peer.log";
 
-    // Strata twice: the default sampler (strata24-bsdf, Sobol'-refined warped strata), as a user
-    // meets it, and the paper's strata24 (plain random points in the strata), which shows what the
-    // refinement costs per path. Both follow every path to depth K, as the text below says.
+    // Strata twice: the default sampler (Sobol'-refined warped strata), as a user meets it, and
+    // the paper's strata24 (plain random points in the strata), which shows what the refinement
+    // costs per path. Both follow every path to depth K, as the text below says.
     struct StrataRun {
         std::string label;
         std::string sampler;
         std::filesystem::path image;
     };
+    const std::string defaultSampler = RenderOptions{}.sampler;
     const StrataRun strataRuns[] = {
-        {"strata render --roulette-depth -1 (defaults: strata24-bsdf, NEE)", RenderOptions{}.sampler,
+        {"strata render --roulette-depth -1 (defaults: " + defaultSampler + ", NEE)", defaultSampler,
          settings.outDir / "peer-strata.exr"},
         {"strata render --roulette-depth -1 --sampler strata24 (NEE)", "strata24",
          settings.outDir / "peer-strata24.exr"}};

@@ -39,6 +39,22 @@ float strataBsdfMixturePdf(const LayeredBsdf& bsdf, const glm::vec3& wo, const g
     return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
 }
 
+// The path's stratum at `bounce` and the point placed in it: plain random, as the paper's
+// estimators take it, or refined pass by pass from the stratum's Sobol' stream.
+PathSamples::StratumPoint stratumPoint(const PathSamples& samples, int bounce, bool refined) {
+    return refined ? samples.stratumSequencePoint(bounce)
+                   : PathSamples::StratumPoint{samples.stratum(bounce), samples.bouncePoint(bounce)};
+}
+
+// A direction of strata24-bsdf's mixture (the warped strata and the specular lobe), weighted by the
+// mixture's density; `stratum` is -1 for a specular direction.
+SampledDirection strataBsdfMixtureSample(const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& d,
+                                         float pSpecular, int stratum) {
+    const float pdf = strataBsdfMixturePdf(bsdf, wo, d, pSpecular);
+    if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};
+    return {d, pdf, bsdf.evaluate(wo, d) * (d.z / pdf), stratum};
+}
+
 // A cosine-weighted direction in stratum `stratum` from the point `u`: weight 24 PSA_i f.
 SampledDirection cosineStratumSample(const LayeredBsdf& bsdf, const glm::vec3& wo, int stratum, glm::vec2 u) {
     const glm::vec3 d = sampleStratumCosine(stratum, u);
@@ -67,9 +83,7 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
         }
         case SamplerKind::Strata24:
         case SamplerKind::Strata24Qmc: {
-            const int id = samples.stratum(bounce);
-            const glm::vec2 u = kind == SamplerKind::Strata24 ? samples.bouncePoint(bounce)
-                                                              : samples.stratumSequencePoint(bounce);
+            const auto [id, u] = stratumPoint(samples, bounce, kind == SamplerKind::Strata24Qmc);
             const glm::vec3 d = sampleStratum(id, u);
             return hemisphereSample(bsdf, wo, d, d.z * kHemisphereSolidAngle, id);
         }
@@ -79,33 +93,22 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
         }
         case SamplerKind::Strata24Cosine:
         case SamplerKind::Strata24CosineQmc: {
-            const int id = samples.stratum(bounce);
-            const glm::vec2 u = kind == SamplerKind::Strata24Cosine ? samples.bouncePoint(bounce)
-                                                                    : samples.stratumSequencePoint(bounce);
+            const auto [id, u] = stratumPoint(samples, bounce, kind == SamplerKind::Strata24CosineQmc);
             return cosineStratumSample(bsdf, wo, id, u);
         }
         case SamplerKind::Strata24Bsdf: {
-            const int id = samples.stratum(bounce);
             const float pSpecular = bsdf.specularProbability(wo);
-            // A Lambertian surface: the warped stratum, with cosine sampling's exact weight.
-            if (pSpecular == 0.0f) {
-                return hemisphereSample(bsdf, wo, sampleWarpedStratum(id, samples.stratumSequencePoint(bounce)),
-                                        kPi, id);
-            }
             // The specular lobe's direction lies in no particular stratum.
-            int stratum = id;
-            glm::vec3 d;
-            if (samples.lobeChoice(bounce) < pSpecular) {
+            if (pSpecular > 0.0f && samples.lobeChoice(bounce) < pSpecular) {
                 const auto specular = bsdf.sampleSpecular(wo, samples.bouncePoint(bounce));
                 if (!specular) return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
-                d = *specular;
-                stratum = -1;
-            } else {
-                d = sampleWarpedStratum(id, samples.stratumSequencePoint(bounce));
+                return strataBsdfMixtureSample(bsdf, wo, *specular, pSpecular, -1);
             }
-            const float pdf = strataBsdfMixturePdf(bsdf, wo, d, pSpecular);
-            if (!(pdf > 0.0f)) return {d, 0.0f, glm::vec3(0.0f), stratum};
-            return {d, pdf, bsdf.evaluate(wo, d) * (d.z / pdf), stratum};
+            const auto [id, u] = samples.stratumSequencePoint(bounce);
+            const glm::vec3 d = sampleWarpedStratum(id, u);
+            // A Lambertian surface: cosine sampling's exact weight.
+            if (pSpecular == 0.0f) return hemisphereSample(bsdf, wo, d, kPi, id);
+            return strataBsdfMixtureSample(bsdf, wo, d, pSpecular, id);
         }
         case SamplerKind::Bsdf: {
             const auto s = bsdf.sample(wo, samples.bouncePoint(bounce), samples.lobeChoice(bounce));

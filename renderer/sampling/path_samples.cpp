@@ -47,17 +47,14 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    if (bounce != stratumBounce_) {
-        if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
-        stratum_ = schedule_->stratum(bounce);
-        stratumBounce_ = bounce;
-    }
-    return stratum_;
+    if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
+    return schedule_->stratum(bounce);
 }
 
-glm::vec2 PathSamples::stratumSequencePoint(int bounce) const {
-    const uint64_t stream = hashCombine(streamKey(sequenceKey_, bounce), static_cast<uint64_t>(stratum(bounce)));
-    return scrambledSobolPoint(pass_, stream);
+PathSamples::StratumPoint PathSamples::stratumSequencePoint(int bounce) const {
+    const int id = stratum(bounce);
+    const uint64_t stream = hashCombine(streamKey(sequenceKey_, bounce), static_cast<uint64_t>(id));
+    return {id, scrambledSobolPoint(pass_, stream)};
 }
 
 float PathSamples::lobeChoice(int bounce) const {

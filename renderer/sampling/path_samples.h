@@ -31,11 +31,16 @@ public:
     // The point in [0,1)^2 that the direction sampler maps onto the hemisphere (or onto a stratum)
     // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
     glm::vec2 bouncePoint(int bounce) const;
-    // The point in [0,1)^2 of the path's stratum at `bounce` from that stratum's own
-    // Owen-scrambled Sobol' stream (sobol.h): one stream per (pixel, bounce, stratum), indexed by
-    // the pass. Every pass uses each stratum once per bounce, so the first 2^m passes put a
-    // (0,m,2)-net in every stratum: each stratum is stratified ever more finely (strata24-qmc).
-    glm::vec2 stratumSequencePoint(int bounce) const;
+    // The path's stratum at `bounce` (stratum()) and a point in [0,1)^2 for it from that
+    // stratum's own Owen-scrambled Sobol' stream (sobol.h): one stream per (pixel, bounce,
+    // stratum), indexed by the pass. Every pass uses each stratum once per bounce, so the first 2^m
+    // passes put a (0,m,2)-net in every stratum: each stratum is stratified ever more finely
+    // (strata24-qmc). The stratum comes with its point, so a bounce works it out once.
+    struct StratumPoint {
+        int stratum;
+        glm::vec2 point;
+    };
+    StratumPoint stratumSequencePoint(int bounce) const;
     // The stratum this path takes at `bounce` (stratum_schedule.h).
     int stratum(int bounce) const;
     // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`;
@@ -66,11 +71,8 @@ private:
     uint32_t pass_;
     int step_;
     // The path's strata, worked out on the first stratum() call rather than at every bounce
-    // (and never for samplers that do not stratify), and the last bounce's stratum, which a
-    // bounce asks for twice (for the direction and for its stratum's Sobol' stream).
+    // (and never for samplers that do not stratify).
     mutable std::optional<PathSchedule> schedule_;
-    mutable int stratumBounce_ = -1;
-    mutable int stratum_ = 0;
 };
 
 }  // namespace strata

@@ -176,13 +176,16 @@ TEST_CASE("path samples: a pixel's streams differ from its neighbour's") {
     CHECK(equal == 0);
 }
 
-TEST_CASE("path samples: a path's strata are the schedule's, whatever order its bounces are asked in") {
-    // PathSamples keeps the last bounce's stratum: asking again, going back or skipping bounces
-    // must still give scheduledStratum's answer.
+TEST_CASE("path samples: a path's strata are the schedule's, and its stratum points come with them") {
+    // PathSamples works the schedule out once per path: asking again, going back or skipping
+    // bounces must still give scheduledStratum's answer, and stratumSequencePoint names the same
+    // stratum.
     for (int step = 0; step < 24; ++step) {
         const PathSamples samples(3, 41, 7, step);
         for (int bounce : {0, 0, 1, 1, 4, 2, 2, 0, 9, 3, 3}) {
-            CHECK(samples.stratum(bounce) == scheduledStratum(samples.pixelKey(), 7, step, bounce));
+            const int scheduled = scheduledStratum(samples.pixelKey(), 7, step, bounce);
+            CHECK(samples.stratum(bounce) == scheduled);
+            CHECK(samples.stratumSequencePoint(bounce).stratum == scheduled);
         }
     }
 }

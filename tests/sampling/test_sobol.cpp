@@ -156,8 +156,8 @@ TEST_CASE("sobol: a pixel's passes put a (0,m,2)-net into every stratum (strata2
         for (uint32_t pass = 0; pass < (1u << m); ++pass) {
             for (int step = 0; step < 24; ++step) {
                 const PathSamples samples(3, 41, pass, step);
-                const glm::vec2 p = samples.stratumSequencePoint(bounce);
-                perStratum[samples.stratum(bounce)].emplace_back(p.x, p.y);
+                const auto [stratum, p] = samples.stratumSequencePoint(bounce);
+                perStratum[stratum].emplace_back(p.x, p.y);
             }
         }
         for (int s = 0; s < 24; ++s) {
