@@ -75,63 +75,121 @@ std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSett
     return std::nullopt;
 }
 
-glm::vec3 PathIntegrator::radiance(const Ray& cameraRay, const PathSamples& samples,
-                                   uint64_t& rays) const {
-    const SceneLights& lights = scene_.lights();
-    glm::vec3 radiance(0.0f);
-    glm::vec3 weight(1.0f);  // product of f_r cos / pdf along the path so far
-    Ray ray = cameraRay;
-    PreviousVertex previous{glm::vec3(0.0f), 0.0f};
-    // A loop, not recursion: depth 10000 costs no stack.
-    for (int bounce = 0;; ++bounce) {
-        ++rays;
-        const auto hit = scene_.intersect(ray);
-        if (!hit) {
-            // The path left the scene: what arrives along it comes from the lights at infinity.
-            const LightHit miss{glm::vec3(0.0f), std::numeric_limits<float>::infinity()};
-            for (uint32_t light : lights.lightsAtInfinity()) {
-                radiance += weight * emittedAlong(light, ray.direction, miss, previous);
-            }
-            break;
-        }
-        const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
-        if (triangle.light >= 0) {
-            const LightHit onLight{triangle.normal, hit->t, {hit->u, hit->v}};
-            radiance += weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
-                                              onLight, previous);
-        }
-        if (bounce == settings_.depth) break;
-        if (scene_.materials().isBlack(triangle.material)) break;  // its weight would be zero
+glm::vec3 PathIntegrator::radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const {
+    glm::vec3 result;
+    radiance(std::span(&ray, 1), std::span(&samples, 1), std::span(&result, 1), rays);
+    return result;
+}
 
-        // Reflection is two-sided: the hemisphere is on the side the ray came from.
-        SurfaceHit surface = scene_.surface(*hit);
-        if (!(orientToward(surface, -ray.direction) > 0.0f)) break;  // along the surface: nothing seen
-        // The strata, the BSDF's cosines and wo live in the shading frame.
-        const Frame frame = Frame::fromNormal(surface.shadingNormal);
-        const glm::vec3 wo = frame.toLocal(-ray.direction);
-        const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
-        // Light that reaches the camera after this vertex's reflection counts as bounce + 1
-        // bounces, which the depth allows here.
-        if (sampleLights_) {
-            radiance += weight * lightSample(surface, frame, wo, bsdf, samples, bounce, rays);
-        }
-        const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce, bsdf, wo);
-        const glm::vec3 direction = frame.toWorld(sampled.local);
-        // A direction above the shading hemisphere but below the surface itself would leave
-        // through the back: it counts, with weight zero (the path ends). On a flat surface the
-        // two hemispheres are one.
-        if (surface.smooth && !(glm::dot(direction, surface.normal) > 0.0f)) break;
-        weight *= sampled.weight;
-        if (isBlack(weight)) break;
-        if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
-            const float survival = rouletteSurvival(weight);
-            if (samples.roulette(bounce) >= survival) break;
-            weight /= survival;
-        }
-        previous = PreviousVertex{surface.point, sampled.pdf};
-        ray = Ray{offsetRayOrigin(surface, direction), direction};
+void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
+                              std::span<glm::vec3> radiance, uint64_t& rays) const {
+    for (size_t first = 0; first < cameraRays.size(); first += kBatch) {
+        const size_t count = std::min(kBatch, cameraRays.size() - first);
+        traceBatch(cameraRays.subspan(first, count), samples.subspan(first, count),
+                   radiance.subspan(first, count), rays);
     }
-    return radiance;
+}
+
+void PathIntegrator::traceBatch(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
+                                std::span<glm::vec3> radiance, uint64_t& rays) const {
+    std::array<PathState, kBatch> paths;
+    std::array<size_t, kBatch> live;  // the paths still going, by index into `paths`
+    size_t liveCount = cameraRays.size();
+    for (size_t i = 0; i < liveCount; ++i) {
+        paths[i] = PathState{cameraRays[i], glm::vec3(1.0f), PreviousVertex{glm::vec3(0.0f), 0.0f}};
+        radiance[i] = glm::vec3(0.0f);
+        live[i] = i;
+    }
+    std::array<Ray, kBatch> traced;
+    std::array<std::optional<RayHit>, kBatch> hits;
+    // The bounce's shadow rays: what each brings, and to which path, if nothing blocks it.
+    std::array<Ray, kBatch> shadowRays;
+    std::array<float, kBatch> shadowReach;
+    std::array<glm::vec3, kBatch> shadowContribution;
+    std::array<size_t, kBatch> shadowPath;
+    std::array<bool, kBatch> blocked;
+    // A loop, not recursion: depth 10000 costs no stack.
+    for (int bounce = 0; liveCount > 0; ++bounce) {
+        for (size_t k = 0; k < liveCount; ++k) traced[k] = paths[live[k]].ray;
+        // Camera rays start together; after the first bounce the paths part ways.
+        scene_.intersect(std::span(traced.data(), liveCount), std::span(hits.data(), liveCount),
+                         bounce == 0 ? Scene::Coherence::Coherent : Scene::Coherence::Incoherent);
+        rays += liveCount;
+        size_t goingOn = 0;
+        size_t shadowCount = 0;
+        for (size_t k = 0; k < liveCount; ++k) {
+            const size_t i = live[k];
+            std::optional<ShadowRay> shadow;
+            if (extend(paths[i], hits[k], samples[i], bounce, radiance[i], shadow)) live[goingOn++] = i;
+            if (shadow) {
+                shadowRays[shadowCount] = shadow->ray;
+                shadowReach[shadowCount] = shadow->reach;
+                shadowContribution[shadowCount] = shadow->contribution;
+                shadowPath[shadowCount++] = i;
+            }
+        }
+        if (shadowCount > 0) {
+            scene_.occluded(std::span(shadowRays.data(), shadowCount), std::span(shadowReach.data(), shadowCount),
+                            std::span(blocked.data(), shadowCount));
+            rays += shadowCount;
+            for (size_t s = 0; s < shadowCount; ++s) {
+                if (!blocked[s]) radiance[shadowPath[s]] += shadowContribution[s];
+            }
+        }
+        liveCount = goingOn;
+    }
+}
+
+bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, const PathSamples& samples,
+                            int bounce, glm::vec3& radiance, std::optional<ShadowRay>& shadow) const {
+    const SceneLights& lights = scene_.lights();
+    const Ray& ray = path.ray;
+    if (!hit) {
+        // The path left the scene: what arrives along it comes from the lights at infinity.
+        const LightHit miss{glm::vec3(0.0f), std::numeric_limits<float>::infinity()};
+        for (uint32_t light : lights.lightsAtInfinity()) {
+            radiance += path.weight * emittedAlong(light, ray.direction, miss, path.previous);
+        }
+        return false;
+    }
+    const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
+    if (triangle.light >= 0) {
+        const LightHit onLight{triangle.normal, hit->t, {hit->u, hit->v}};
+        radiance += path.weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
+                                               onLight, path.previous);
+    }
+    if (bounce == settings_.depth) return false;
+    if (scene_.materials().isBlack(triangle.material)) return false;  // its weight would be zero
+
+    // Reflection is two-sided: the hemisphere is on the side the ray came from.
+    SurfaceHit surface = scene_.surface(*hit);
+    if (!(orientToward(surface, -ray.direction) > 0.0f)) return false;  // along the surface: nothing seen
+    // The strata, the BSDF's cosines and wo live in the shading frame.
+    const Frame frame = Frame::fromNormal(surface.shadingNormal);
+    const glm::vec3 wo = frame.toLocal(-ray.direction);
+    const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
+    // Light that reaches the camera after this vertex's reflection counts as bounce + 1
+    // bounces, which the depth allows here.
+    if (sampleLights_) {
+        shadow = lightSample(surface, frame, wo, bsdf, samples, bounce);
+        if (shadow) shadow->contribution = path.weight * shadow->contribution;
+    }
+    const SampledDirection sampled = sampleDirection(settings_.sampler, samples, bounce, bsdf, wo);
+    const glm::vec3 direction = frame.toWorld(sampled.local);
+    // A direction above the shading hemisphere but below the surface itself would leave
+    // through the back: it counts, with weight zero (the path ends). On a flat surface the
+    // two hemispheres are one.
+    if (surface.smooth && !(glm::dot(direction, surface.normal) > 0.0f)) return false;
+    path.weight *= sampled.weight;
+    if (isBlack(path.weight)) return false;
+    if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
+        const float survival = rouletteSurvival(path.weight);
+        if (samples.roulette(bounce) >= survival) return false;
+        path.weight /= survival;
+    }
+    path.previous = PreviousVertex{surface.point, sampled.pdf};
+    path.ray = Ray{offsetRayOrigin(surface, direction), direction};
+    return true;
 }
 
 glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& direction,
@@ -145,33 +203,31 @@ glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& directio
     return emitted * powerHeuristic(previous.directionPdf, lightPdf);
 }
 
-glm::vec3 PathIntegrator::lightSample(const SurfaceHit& surface, const Frame& frame,
-                                      const glm::vec3& wo, const LayeredBsdf& bsdf,
-                                      const PathSamples& samples, int bounce,
-                                      uint64_t& rays) const {
+std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
+    const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const LayeredBsdf& bsdf,
+    const PathSamples& samples, int bounce) const {
     const glm::vec3 u = samples.lightSample(bounce);
     const LightChoice choice = scene_.lights().sampler().choose(u.x);
     const Light& light = scene_.lights().light(choice.light);
     const auto sample = light.sample(surface.point, {u.y, u.z});
-    if (!sample) return glm::vec3(0.0f);
+    if (!sample) return std::nullopt;
     // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
-    if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return glm::vec3(0.0f);
+    if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return std::nullopt;
     const glm::vec3 wi = frame.toLocal(sample->direction);
-    if (!(wi.z > 0.0f)) return glm::vec3(0.0f);
+    if (!(wi.z > 0.0f)) return std::nullopt;
     const glm::vec3 f = bsdf.evaluate(wo, wi);
-    if (isBlack(f)) return glm::vec3(0.0f);
-    ++rays;
+    if (isBlack(f)) return std::nullopt;
     const glm::vec3 origin = offsetRayOrigin(surface, sample->direction);
     // The origin's offset from the surface is far smaller than the shortening, so the distance
     // from the surface point serves for the shadow ray too.
     const float reach = sample->onSurface ? sample->distance * (1.0f - kShadowRayShortening)
                                           : sample->distance;
-    if (scene_.occluded(Ray{origin, sample->direction}, reach)) return glm::vec3(0.0f);
-    if (light.isDelta()) return f * sample->radiance * (wi.z / choice.probability);
+    const Ray ray{origin, sample->direction};
+    if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (wi.z / choice.probability)};
     const float lightPdf = choice.probability * sample->pdf;
     const float misWeight =
         powerHeuristic(lightPdf, directionPdf(settings_.sampler, bsdf, wo, wi));
-    return f * sample->radiance * (wi.z * misWeight / lightPdf);
+    return ShadowRay{ray, reach, f * sample->radiance * (wi.z * misWeight / lightPdf)};
 }
 
 }  // namespace strata

@@ -15,6 +15,7 @@
 // knows lights only through the interface of lights/light.h.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <glm/vec3.hpp>
 
@@ -54,8 +55,17 @@ public:
 
     // Radiance arriving along -ray.direction at ray.origin. `rays` counts the rays traced.
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
+    // The same for many paths, each camera ray with its path's samples: radiance[i] is exactly
+    // what the one-path call gives path i. The paths are traced together, bounce by bounce, so
+    // that Embree takes each bounce's rays, and then its shadow rays, as one stream.
+    void radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
+                  std::span<glm::vec3> radiance, uint64_t& rays) const;
 
     const PathIntegratorSettings& settings() const { return settings_; }
+
+    // Paths traced together: enough to keep Embree's packets of 8 full as paths end, few
+    // enough for their state to stay on the stack. Callers do best to hand over this many.
+    static constexpr size_t kBatch = 64;
 
 private:
     // Where the path's previous direction was sampled, for the MIS weight of the light it finds.
@@ -63,14 +73,35 @@ private:
         glm::vec3 point;
         float directionPdf;  // 0: no light sample could have found this direction (camera ray)
     };
+    struct PathState {
+        Ray ray;           // the ray the path traces next
+        glm::vec3 weight;  // product of f_r cos / pdf along the path so far
+        PreviousVertex previous;
+    };
+    // A light sample's shadow ray and what it adds to the path's radiance when nothing blocks it.
+    struct ShadowRay {
+        Ray ray;
+        float reach;  // how far the segment goes along the ray
+        glm::vec3 contribution;
+    };
+
+    // At most kBatch paths, bounce by bounce.
+    void traceBatch(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
+                    std::span<glm::vec3> radiance, uint64_t& rays) const;
+    // One bounce of one path that has traced its ray to `hit`: adds the emission found there to
+    // `radiance`, asks for a light sample's shadow ray (next-event estimation), and turns the
+    // path to its next ray. False when the path ends here.
+    bool extend(PathState& path, const std::optional<RayHit>& hit, const PathSamples& samples, int bounce,
+                glm::vec3& radiance, std::optional<ShadowRay>& shadow) const;
     // The MIS-weighted radiance from light `light`, reached at `hit` along `direction`.
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
-    // The reflected radiance from one light sample, MIS-weighted against the direction sampler,
-    // at `surface` (normal facing the viewer) toward wo.
-    glm::vec3 lightSample(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                          const LayeredBsdf& bsdf, const PathSamples& samples, int bounce,
-                          uint64_t& rays) const;
+    // One light sample at `surface` (normal facing the viewer) toward wo: its shadow ray and the
+    // reflected radiance it brings, MIS-weighted against the direction sampler; nullopt when it
+    // brings nothing whatever the shadow ray finds.
+    std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
+                                         const LayeredBsdf& bsdf, const PathSamples& samples,
+                                         int bounce) const;
 
     const Scene& scene_;
     PathIntegratorSettings settings_;

@@ -1,6 +1,8 @@
 #include "integrator/progressive_renderer.h"
 
 #include <algorithm>
+#include <span>
+#include <vector>
 #include <string>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
@@ -131,19 +133,38 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                 _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
                 uint64_t rays = 0;
                 uint64_t paths = 0;
+                // The tile's paths, pixel by pixel and step by step, go to the integrator in
+                // batches, which it traces together (path_integrator.h).
+                std::vector<size_t> batchPixels;
+                std::vector<PathSamples> batchSamples;
+                std::vector<Ray> cameraRays;
+                std::vector<glm::vec3> radiance(PathIntegrator::kBatch);
+                const auto traceBatch = [&] {
+                    integrator_.radiance(cameraRays, batchSamples, std::span(radiance.data(), cameraRays.size()),
+                                         rays);
+                    for (size_t k = 0; k < cameraRays.size(); ++k) {
+                        buffer.addSample(batchPixels[k], radiance[k]);
+                        const bool lastStep = batchSamples[k].step() + 1 == kPathsPerPass;
+                        if (lastStep) buffer.completePass(batchPixels[k]);
+                    }
+                    paths += cameraRays.size();
+                    batchPixels.clear();
+                    batchSamples.clear();
+                    cameraRays.clear();
+                };
                 for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
                         const size_t pixel = static_cast<size_t>(y) * width + x;
                         if (skip && (*skip)[pixel]) continue;
                         for (int step = firstStep; step < endStep; ++step) {
-                            const PathSamples samples(settings_.seed, pixel, pass, step);
-                            const Ray ray = camera_.generateRay(x, y, samples.pixelJitter());
-                            buffer.addSample(pixel, integrator_.radiance(ray, samples, rays));
-                            ++paths;
+                            batchPixels.push_back(pixel);
+                            batchSamples.emplace_back(settings_.seed, pixel, pass, step);
+                            cameraRays.push_back(camera_.generateRay(x, y, batchSamples.back().pixelJitter()));
+                            if (cameraRays.size() == PathIntegrator::kBatch) traceBatch();
                         }
-                        if (endStep == kPathsPerPass) buffer.completePass(pixel);
                     }
                 }
+                if (!cameraRays.empty()) traceBatch();
                 rays_.fetch_add(rays, std::memory_order_relaxed);
                 paths_.fetch_add(paths, std::memory_order_relaxed);
             }),

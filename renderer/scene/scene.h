@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 #include <embree3/rtcore.h>
 #include <glm/vec2.hpp>
@@ -73,6 +74,13 @@ public:
     void setEnvironment(const Environment& environment);
 
     std::optional<RayHit> intersect(const Ray& ray) const;
+    // Many rays at once, traced in Embree's packets of 8: a packet pays even for incoherent rays,
+    // and more for rays that start together (Coherent: a pixel's camera rays). Each ray's answer
+    // is bit for bit the one the single-ray query gives it (tests/scene/test_scene.cpp).
+    enum class Coherence { Coherent, Incoherent };
+    void intersect(std::span<const Ray> rays, std::span<std::optional<RayHit>> hits, Coherence coherence) const;
+    // blocked[i]: whether occluded(rays[i], distances[i]).
+    void occluded(std::span<const Ray> rays, std::span<const float> distances, std::span<bool> blocked) const;
     // The surface record at a hit.
     SurfaceHit surface(const RayHit& hit) const;
     // Whether anything blocks the open segment from origin to origin + direction * distance.
@@ -99,6 +107,9 @@ public:
     RTCScene embreeScene() const { return rtcScene_; }
 
 private:
+    // Embree's answer for one ray (geometry 0: the opaque triangles, 1: the cut-outs) as a RayHit.
+    std::optional<RayHit> hitOf(uint32_t geometry, uint32_t primitive, float t, float u, float v) const;
+
     MeshData mesh_;
     std::vector<Triangle> triangles_;
     MaterialTable materials_;

@@ -193,3 +193,42 @@ TEST_CASE("integrator: Russian roulette is unbiased on the furnace and ends path
         CHECK(withRoulette.counters().rays < withoutRoulette.counters().rays / 2);
     }
 }
+
+TEST_CASE("path integrator: paths traced together give bit for bit what each gives alone") {
+    // The glossy scene (layered GGX, an area lamp) with next-event estimation and roulette from
+    // the first bounce: paths end at every bounce, some by leaving the scene, so the batch
+    // thins unevenly. 150 paths: two full batches and a part.
+    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/glossy/glossy.obj");
+    const Camera camera(loaded.settings.pose, 10, 5);
+    for (const SamplerKind sampler : {SamplerKind::Strata24Bsdf, SamplerKind::Uniform}) {
+        PathIntegratorSettings settings;
+        settings.depth = 7;
+        settings.sampler = sampler;
+        settings.nextEventEstimation = true;
+        settings.rouletteDepth = 1;
+        const PathIntegrator integrator(loaded.scene, settings);
+        std::vector<PathSamples> samples;
+        std::vector<Ray> rays;
+        for (int pixel = 0; pixel < 50; ++pixel) {
+            for (int step = 0; step < 3; ++step) {
+                samples.emplace_back(5, pixel, 2, step);
+                rays.push_back(camera.generateRay(pixel % 10, pixel / 10, samples.back().pixelJitter()));
+            }
+        }
+        std::vector<glm::vec3> together(rays.size());
+        uint64_t raysTogether = 0;
+        integrator.radiance(rays, samples, together, raysTogether);
+        uint64_t raysAlone = 0;
+        size_t lit = 0;
+        for (size_t i = 0; i < rays.size(); ++i) {
+            CAPTURE(i);
+            const glm::vec3 alone = integrator.radiance(rays[i], samples[i], raysAlone);
+            CHECK(together[i].x == alone.x);
+            CHECK(together[i].y == alone.y);
+            CHECK(together[i].z == alone.z);
+            lit += alone.x > 0.0f;
+        }
+        CHECK(raysTogether == raysAlone);
+        CHECK(lit > rays.size() / 2);
+    }
+}
