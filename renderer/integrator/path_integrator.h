@@ -13,6 +13,12 @@
 // by multiple importance sampling with the power heuristic (Veach & Guibas 1995), whose weights
 // sum to 1 for every direction, so the estimate stays unbiased for every sampler. The integrator
 // knows lights only through the interface of lights/light.h.
+//
+// Paths go in batches: every live path of the batch traces its ray, then every shadow ray of the
+// bounce is traced, and so on, bounce by bounce. Embree traces a packet of 8 rays faster than 8
+// single rays, even incoherent ones, and a pixel's camera rays, which start together, much
+// faster. Each path's arithmetic is what it would be alone, so a batch changes no bit of any
+// path's radiance.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -57,7 +63,7 @@ public:
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
     // The same for many paths, each camera ray with its path's samples: radiance[i] is exactly
     // what the one-path call gives path i. The paths are traced together, bounce by bounce, so
-    // that Embree takes each bounce's rays, and then its shadow rays, as one stream.
+    // that Embree takes each bounce's rays, and then its shadow rays, in packets.
     void radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
                   std::span<glm::vec3> radiance, uint64_t& rays) const;
 
