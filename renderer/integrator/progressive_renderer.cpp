@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <span>
-#include <vector>
 #include <string>
+#include <vector>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 #include <tbb/blocked_range2d.h>
