@@ -16,8 +16,8 @@
 //
 // Paths go in batches: every live path of the batch traces its ray, then every shadow ray of the
 // bounce is traced, and so on, bounce by bounce. Embree traces a packet of 8 rays faster than 8
-// single rays, even incoherent ones, and a pixel's camera rays, which start together, much
-// faster. Each path's arithmetic is what it would be alone, so a batch changes no bit of any
+// single rays, even incoherent ones, and a pixel's camera rays, which start together, faster
+// still. Each path's arithmetic is what it would be alone, so a batch changes no bit of any
 // path's radiance.
 #include <cstdint>
 #include <optional>

@@ -163,7 +163,7 @@ RTCRayHit embreeRayHit(const Ray& ray) {
 }
 
 // Rays per Embree packet in the many-ray queries: 8, the width of AVX2, on which Embree traces a
-// packet of 8 incoherent rays at 1.2x the speed of single rays (strata bench: the ray ceiling).
+// packet of 8 incoherent rays at 1.15-1.2x the speed of single rays (strata bench: the ray ceiling).
 constexpr size_t kPacket = 8;
 
 // Lane k of `packet` set to trace `ray` from t = 0 to `distance`.
