@@ -64,7 +64,13 @@ float rouletteSurvival(const glm::vec3& weight) {
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
     : scene_(scene),
       settings_(settings),
-      sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()) {}
+      sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
+      lightNumbers_(lightNumbersFor(scene.lights())) {}
+
+PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& lights) {
+    if (lights.size() > 1) return LightNumbers::ChoiceAndPoint;
+    return lights.deltaLights() == lights.size() ? LightNumbers::None : LightNumbers::Point;
+}
 
 std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
     const SceneLights& lights = scene.lights();
@@ -209,10 +215,24 @@ glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& directio
     return emitted * powerHeuristic(previous.directionPdf, lightPdf);
 }
 
+glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) const {
+    // The choice of a single light takes any number (light_sampler.h), and a delta light's
+    // sample no point: the numbers left out would not change a bit of the result.
+    switch (lightNumbers_) {
+        case LightNumbers::None: return glm::vec3(0.0f);
+        case LightNumbers::Point: {
+            const glm::vec2 point = samples.lightPoint(bounce);
+            return {0.0f, point.x, point.y};
+        }
+        case LightNumbers::ChoiceAndPoint: break;
+    }
+    return samples.lightSample(bounce);
+}
+
 std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
     const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const LayeredBsdf& bsdf,
     const PathSamples& samples, int bounce) const {
-    const glm::vec3 u = samples.lightSample(bounce);
+    const glm::vec3 u = lightNumbers(samples, bounce);
     const LightChoice choice = scene_.lights().sampler().choose(u.x);
     const Light& light = scene_.lights().light(choice.light);
     const auto sample = light.sample(surface.point, {u.y, u.z});

@@ -109,9 +109,18 @@ private:
                                          const LayeredBsdf& bsdf, const PathSamples& samples,
                                          int bounce) const;
 
+    // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
+    // point when the scene has more than one light, the point alone for a single light with
+    // extent (an emitting triangle, the environment), none for a single delta light.
+    enum class LightNumbers { None, Point, ChoiceAndPoint };
+    static LightNumbers lightNumbersFor(const SceneLights& lights);
+    // lightSample's numbers as PathSamples::lightSample lays them out, the unused ones 0.
+    glm::vec3 lightNumbers(const PathSamples& samples, int bounce) const;
+
     const Scene& scene_;
     PathIntegratorSettings settings_;
     bool sampleLights_;  // next-event estimation on and something to sample
+    LightNumbers lightNumbers_;
 };
 
 }  // namespace strata

@@ -72,4 +72,9 @@ glm::vec3 PathSamples::lightSample(int bounce) const {
     return {p.z, p.x, p.y};
 }
 
+glm::vec2 PathSamples::lightPoint(int bounce) const {
+    // The 3D stream's first two coordinates are its 2D stream's (sobol.h).
+    return scrambledSobolPoint(pixelIndex_, streamKey(lightKey_, bounce));
+}
+
 }  // namespace strata

@@ -51,6 +51,9 @@ public:
     // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it;
     // jointly the first three Sobol' dimensions over the pixel.
     glm::vec3 lightSample(int bounce) const;
+    // lightSample's (y, z) alone, bit for bit, without the choice's dimension: what a scene with
+    // a single light needs.
+    glm::vec2 lightPoint(int bounce) const;
 
     uint64_t pixelKey() const { return pixelKey_; }
     uint32_t pass() const { return pass_; }

@@ -40,7 +40,8 @@ uint32_t owenScramble(uint32_t value, uint32_t seed);
 glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey);
 // The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput sequence:
 // every aligned block of 2^m values has one value in each interval [k 2^-m, (k+1) 2^-m)), and
-// for the first three, shuffled by one index scramble so that the three stay jointly a net.
+// for the first three, shuffled by one index scramble so that the three stay jointly a net. A
+// stream's 3D point starts with its 2D point, which starts with its value.
 float scrambledSobolValue(uint32_t index, uint64_t streamKey);
 glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey);
 

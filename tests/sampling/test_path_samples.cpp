@@ -116,6 +116,8 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
                 jitter.push_back({s.pixelJitter().x, s.pixelJitter().y});
                 const glm::vec3 l = s.lightSample(2);
                 lightPoint.push_back({l.y, l.z});
+                // A single light's point alone is the same point, bit for bit.
+                CHECK(s.lightPoint(2) == glm::vec2(l.y, l.z));
                 light.push_back({l.x, l.y, l.z});
                 lobe.push_back({s.lobeChoice(2)});
                 roulette.push_back({s.roulette(2)});

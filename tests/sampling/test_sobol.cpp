@@ -70,8 +70,12 @@ TEST_CASE("sobol: the third dimension has Joe and Kuo's direction numbers and ma
         for (uint32_t block : {0u, 3u}) {
             for (bool scrambled : {false, true}) {
                 std::vector<glm::dvec3> points;
+                bool extendsPoint2 = true;
                 for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
                     const glm::vec3 p = scrambledSobolPoint3(i, 0xabcdefu + block);
+                    // The 2D point of the same stream is its first two coordinates, bit for bit.
+                    const glm::vec2 p2 = scrambledSobolPoint(i, 0xabcdefu + block);
+                    extendsPoint2 = extendsPoint2 && p.x == p2.x && p.y == p2.y;
                     points.push_back(scrambled ? glm::dvec3(p)
                                                : glm::dvec3(sobolFirstCoordinate(i), sobolSecondCoordinate(i),
                                                             sobolThirdCoordinate(i)) * 0x1p-32);
@@ -91,6 +95,7 @@ TEST_CASE("sobol: the third dimension has Joe and Kuo's direction numbers and ma
                 }
                 INFO("m " << m << " block " << block << (scrambled ? " scrambled" : " plain"));
                 CHECK(net);
+                CHECK(extendsPoint2);
             }
         }
     }
