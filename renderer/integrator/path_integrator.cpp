@@ -216,8 +216,8 @@ glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& directio
 }
 
 glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) const {
-    // The choice of a single light takes any number (light_sampler.h), and a delta light's
-    // sample no point: the numbers left out would not change a bit of the result.
+    // A single light is chosen whatever the number (light_sampler.h), and a delta light's
+    // sample does not read its point (light.h): the numbers left out would change no bit.
     switch (lightNumbers_) {
         case LightNumbers::None: return glm::vec3(0.0f);
         case LightNumbers::Point: {

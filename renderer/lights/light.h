@@ -45,7 +45,8 @@ public:
     virtual glm::vec3 emitted(const glm::vec3& direction, const LightHit& hit) const = 0;
     // Total emitted power (W), per colour channel.
     virtual glm::vec3 power() const = 0;
-    // Reached only by sampling (no ray can find it).
+    // Reached only by sampling (no ray can find it). A delta light has one direction toward
+    // each point, so its sample() does not read `u`.
     virtual bool isDelta() const { return false; }
 };
 
