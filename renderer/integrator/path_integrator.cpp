@@ -98,9 +98,9 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
 
 // Flattened: every call below it, samplers, random streams and BSDFs included, is inlined into
 // the bounce loop (Embree's and the lights' virtual calls stay calls). Left to its own heuristics
-// GCC kept the stratum map and the stratum schedule as calls, whose vec3 returns and the spills
-// of the loop's live state around them made strata24 render 8% slower than with them inlined
-// (bundled Cornell box, one thread, medians of 3 alternated runs; images bit-identical).
+// GCC kept the stratum map and the stratum schedule as calls, and strata24 rendered 8% slower
+// than with them inlined (bundled Cornell box, one thread, medians of 3 alternated runs; images
+// bit-identical), most likely from their vec3 returns and the loop state saved around them.
 [[gnu::flatten]] void PathIntegrator::traceBatch(std::span<const Ray> cameraRays,
                                                  std::span<const PathSamples> samples,
                                                  std::span<glm::vec3> radiance, uint64_t& rays) const {

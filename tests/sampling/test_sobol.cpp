@@ -73,9 +73,11 @@ TEST_CASE("sobol: the third dimension has Joe and Kuo's direction numbers and ma
                 bool extendsPoint2 = true;
                 for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
                     const glm::vec3 p = scrambledSobolPoint3(i, 0xabcdefu + block);
-                    // The 2D point of the same stream is its first two coordinates, bit for bit.
-                    const glm::vec2 p2 = scrambledSobolPoint(i, 0xabcdefu + block);
-                    extendsPoint2 = extendsPoint2 && p.x == p2.x && p.y == p2.y;
+                    if (scrambled) {
+                        // The 2D point of the same stream is its first two coordinates, bit for bit.
+                        const glm::vec2 p2 = scrambledSobolPoint(i, 0xabcdefu + block);
+                        extendsPoint2 = extendsPoint2 && p.x == p2.x && p.y == p2.y;
+                    }
                     points.push_back(scrambled ? glm::dvec3(p)
                                                : glm::dvec3(sobolFirstCoordinate(i), sobolSecondCoordinate(i),
                                                             sobolThirdCoordinate(i)) * 0x1p-32);
