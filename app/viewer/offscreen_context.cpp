@@ -1,5 +1,6 @@
 #include "offscreen_context.h"
 
+#include <dlfcn.h>
 #include <string>
 #include <vector>
 #include <EGL/egl.h>
@@ -60,31 +61,69 @@ private:
     EGLContext context_ = EGL_NO_CONTEXT;
 };
 
+// OSMesa is opened when a context is asked for, not linked: it carries llvmpipe and LLVM, whose
+// relocations cost about 70 ms at the start of every `strata` process (measured with an empty
+// program linked against it), `render` included, which never draws.
+class OsMesaLibrary {
+public:
+    OsMesaLibrary() {
+        // The soname of Mesa's OSMesa ABI. RTLD_NODELETE: LLVM is not made to be unloaded.
+        library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+        if (!library_) throw Error(std::string("OSMesa: ") + dlerror());
+        createContextAttribs = resolve<decltype(&OSMesaCreateContextAttribs)>("OSMesaCreateContextAttribs");
+        makeCurrent = resolve<decltype(&OSMesaMakeCurrent)>("OSMesaMakeCurrent");
+        destroyContext = resolve<decltype(&OSMesaDestroyContext)>("OSMesaDestroyContext");
+        getProcAddress = resolve<GLADloadfunc>("OSMesaGetProcAddress");
+    }
+    ~OsMesaLibrary() { dlclose(library_); }
+    OsMesaLibrary(const OsMesaLibrary&) = delete;
+    OsMesaLibrary& operator=(const OsMesaLibrary&) = delete;
+
+    decltype(&OSMesaCreateContextAttribs) createContextAttribs;
+    decltype(&OSMesaMakeCurrent) makeCurrent;
+    decltype(&OSMesaDestroyContext) destroyContext;
+    GLADloadfunc getProcAddress;
+
+private:
+    template <typename Function>
+    Function resolve(const char* name) {
+        void* symbol = dlsym(library_, name);
+        if (!symbol) {
+            dlclose(library_);
+            throw Error(std::string("OSMesa: no ") + name + " in libOSMesa.so.8");
+        }
+        return reinterpret_cast<Function>(symbol);
+    }
+
+    void* library_ = nullptr;
+};
+
 class OsMesaContext final : public OffscreenContext {
 public:
     OsMesaContext() {
         const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                                   OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-        context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+        context_ = osMesa_.createContextAttribs(attributes, nullptr);
         if (!context_) throw Error("OSMesa: cannot create an OpenGL 3.3 core context");
         // OSMesa needs a colour buffer to make a context current; the viewer draws to its own
         // framebuffer object, so one pixel is enough.
-        if (!OSMesaMakeCurrent(context_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-            OSMesaDestroyContext(context_);
+        if (!osMesa_.makeCurrent(context_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
+            osMesa_.destroyContext(context_);
             throw Error("OSMesa: cannot make the context current");
         }
         try {
-            loadGl(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress));
+            loadGl(osMesa_.getProcAddress);
         } catch (...) {
-            OSMesaDestroyContext(context_);
+            osMesa_.destroyContext(context_);
             throw;
         }
     }
-    ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+    ~OsMesaContext() override { osMesa_.destroyContext(context_); }
     std::string_view backendName() const override { return "osmesa"; }
 
 private:
+    OsMesaLibrary osMesa_;
     OSMesaContext context_ = nullptr;
     std::vector<unsigned char> pixel_ = std::vector<unsigned char>(4);
 };
