@@ -123,6 +123,11 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
     if (control.firstRow < 0 || control.firstRow > endRow) throw Error("renderStep: bad row range");
     const std::atomic<bool>* cancel = control.cancel;
     const std::vector<uint8_t>* skip = control.skip;
+    // A pixel's paths share its streams (path_samples.h) when it gets several in this call; for
+    // one or two, working out every bounce's streams would cost more than each path's own.
+    constexpr int kMinPathsToShareStreams = 4;
+    const bool shareStreams = endStep - firstStep >= kMinPathsToShareStreams;
+    const int depth = settings_.integrator.depth;
     arena_->execute([&] {
         tbb::parallel_for(
             tbb::blocked_range2d<int>(control.firstRow, endRow, kTileSize, 0, width, kTileSize),
@@ -137,6 +142,10 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                 // batches, which it traces together (path_integrator.h).
                 std::vector<size_t> batchPixels;
                 std::vector<PathSamples> batchSamples;
+                // The streams of the batch's pixels, which their samples point to: reserved for a
+                // whole batch, so that none moves while the batch is filled.
+                std::vector<PixelStreams> batchStreams;
+                batchStreams.reserve(PathIntegrator::kBatch);
                 std::vector<Ray> cameraRays;
                 std::vector<glm::vec3> radiance(PathIntegrator::kBatch);
                 const auto traceBatch = [&] {
@@ -150,17 +159,29 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                     paths += cameraRays.size();
                     batchPixels.clear();
                     batchSamples.clear();
+                    batchStreams.clear();
                     cameraRays.clear();
                 };
                 for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
                         const size_t pixel = static_cast<size_t>(y) * width + x;
                         if (skip && (*skip)[pixel]) continue;
+                        const PixelStreams* streams = nullptr;
                         for (int step = firstStep; step < endStep; ++step) {
+                            if (shareStreams && !streams) {
+                                streams = &batchStreams.emplace_back(settings_.seed, pixel, depth);
+                            }
                             batchPixels.push_back(pixel);
-                            batchSamples.emplace_back(settings_.seed, pixel, pass, step);
+                            if (streams) {
+                                batchSamples.emplace_back(*streams, pass, step);
+                            } else {
+                                batchSamples.emplace_back(settings_.seed, pixel, pass, step);
+                            }
                             cameraRays.push_back(camera_.generateRay(x, y, batchSamples.back().pixelJitter()));
-                            if (cameraRays.size() == PathIntegrator::kBatch) traceBatch();
+                            if (cameraRays.size() == PathIntegrator::kBatch) {
+                                traceBatch();
+                                streams = nullptr;
+                            }
                         }
                     }
                 }

@@ -1,7 +1,8 @@
 #include "sampling/path_samples.h"
 
+#include <algorithm>
+
 #include "sampling/random.h"
-#include "sampling/sobol.h"
 #include "sampling/strata24.h"
 
 namespace strata {
@@ -17,16 +18,44 @@ constexpr uint64_t kRouletteTag = 0x726f756c6574ull;     // "roulet"
 constexpr uint64_t kSequenceTag = 0x736f626f6cull;       // "sobol"
 }  // namespace
 
-PathSamples::PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step)
-    : pixelKey_(hashCombine(mixBits(seed), pixel)),
-      pathKey_(hashCombine(hashCombine(pixelKey_, pass), static_cast<uint64_t>(step))),
-      lightKey_(hashCombine(pixelKey_, kLightTag)),
-      lobeKey_(hashCombine(pixelKey_, kLobeTag)),
-      rouletteKey_(hashCombine(pixelKey_, kRouletteTag)),
-      sequenceKey_(hashCombine(pixelKey_, kSequenceTag)),
+PixelKeys::PixelKeys(uint64_t seed, uint64_t pixelIndex)
+    : pixel(hashCombine(mixBits(seed), pixelIndex)),
+      jitter(hashCombine(pixel, kPixelJitterTag)),
+      light(hashCombine(pixel, kLightTag)),
+      lobe(hashCombine(pixel, kLobeTag)),
+      roulette(hashCombine(pixel, kRouletteTag)),
+      sequence(hashCombine(pixel, kSequenceTag)) {}
+
+uint64_t PixelStreams::streamKey(uint64_t valueKey, int bounce) {
+    return hashCombine(valueKey, static_cast<uint64_t>(bounce));
+}
+
+PixelStreams::PixelStreams(uint64_t seed, uint64_t pixel, int depth)
+    : keys_(seed, pixel),
+      cachedBounces_(std::clamp(depth, 0, kMaxCachedBounces)),
+      jitter_(keys_.jitter) {
+    for (int bounce = 0; bounce < cachedBounces_; ++bounce) {
+        const auto b = static_cast<size_t>(bounce);
+        light_[b] = SobolStream(streamKey(keys_.light, bounce));
+        lobe_[b] = SobolStream(streamKey(keys_.lobe, bounce));
+        roulette_[b] = SobolStream(streamKey(keys_.roulette, bounce));
+        sequence_[b] = streamKey(keys_.sequence, bounce);
+    }
+}
+
+PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step)
+    : keys_(keys),
+      streams_(streams),
+      pathKey_(hashCombine(hashCombine(keys.pixel, pass), static_cast<uint64_t>(step))),
       pixelIndex_(pass * static_cast<uint32_t>(kStrataCount) + static_cast<uint32_t>(step)),
       pass_(pass),
       step_(step) {}
+
+PathSamples::PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step)
+    : PathSamples(PixelKeys(seed, pixel), nullptr, pass, step) {}
+
+PathSamples::PathSamples(const PixelStreams& pixel, uint32_t pass, int step)
+    : PathSamples(pixel.keys(), &pixel, pass, step) {}
 
 glm::vec2 PathSamples::point(uint64_t dimension) const {
     const uint64_t bits = hashCombine(pathKey_, dimension);
@@ -34,12 +63,8 @@ glm::vec2 PathSamples::point(uint64_t dimension) const {
     return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
-uint64_t PathSamples::streamKey(uint64_t tagKey, int bounce) {
-    return hashCombine(tagKey, static_cast<uint64_t>(bounce));
-}
-
 glm::vec2 PathSamples::pixelJitter() const {
-    return scrambledSobolPoint(pixelIndex_, hashCombine(pixelKey_, kPixelJitterTag));
+    return (streams_ ? streams_->jitter() : SobolStream(keys_.jitter)).point(pixelIndex_);
 }
 
 glm::vec2 PathSamples::bouncePoint(int bounce) const {
@@ -47,34 +72,42 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    if (!schedule_) schedule_.emplace(pixelKey_, pass_, step_);
+    if (!schedule_) schedule_.emplace(keys_.pixel, pass_, step_);
     return schedule_->stratum(bounce);
 }
 
 PathSamples::StratumPoint PathSamples::stratumSequencePoint(int bounce) const {
     const int id = stratum(bounce);
-    const uint64_t stream = hashCombine(streamKey(sequenceKey_, bounce), static_cast<uint64_t>(id));
-    return {id, scrambledSobolPoint(pass_, stream)};
+    const uint64_t bounceKey = cached(bounce) ? streams_->sequenceKey(bounce)
+                                              : PixelStreams::streamKey(keys_.sequence, bounce);
+    return {id, SobolStream(hashCombine(bounceKey, static_cast<uint64_t>(id))).point(pass_)};
 }
 
 float PathSamples::lobeChoice(int bounce) const {
-    return scrambledSobolValue(pixelIndex_, streamKey(lobeKey_, bounce));
+    return (cached(bounce) ? streams_->lobe(bounce) : SobolStream(PixelStreams::streamKey(keys_.lobe, bounce)))
+        .value(pixelIndex_);
 }
 
 float PathSamples::roulette(int bounce) const {
-    return scrambledSobolValue(pixelIndex_, streamKey(rouletteKey_, bounce));
+    return (cached(bounce) ? streams_->roulette(bounce)
+                           : SobolStream(PixelStreams::streamKey(keys_.roulette, bounce)))
+        .value(pixelIndex_);
+}
+
+SobolStream PathSamples::lightStream(int bounce) const {
+    return cached(bounce) ? streams_->light(bounce) : SobolStream(PixelStreams::streamKey(keys_.light, bounce));
 }
 
 glm::vec3 PathSamples::lightSample(int bounce) const {
     // The point on the emitter takes the (0,2)-sequence pair, the emitter choice the third
     // coordinate: jointly a (1,3)-sequence, so the choice and the point are stratified together.
-    const glm::vec3 p = scrambledSobolPoint3(pixelIndex_, streamKey(lightKey_, bounce));
+    const glm::vec3 p = lightStream(bounce).point3(pixelIndex_);
     return {p.z, p.x, p.y};
 }
 
 glm::vec2 PathSamples::lightPoint(int bounce) const {
     // The 3D stream's first two coordinates are its 2D stream's (sobol.h).
-    return scrambledSobolPoint(pixelIndex_, streamKey(lightKey_, bounce));
+    return lightStream(bounce).point(pixelIndex_);
 }
 
 }  // namespace strata

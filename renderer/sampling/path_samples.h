@@ -13,18 +13,59 @@
 // every path is unbiased. The direction samplers' own points (bouncePoint, stratumSequencePoint)
 // keep their meanings: the paper's estimators are compared on the same pixel, light and roulette
 // numbers.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "sampling/sobol.h"
 #include "sampling/stratum_schedule.h"
 
 namespace strata {
 
+// The keys of one pixel's streams: hashes of (seed, pixel) with each value's tag folded in.
+struct PixelKeys {
+    PixelKeys(uint64_t seed, uint64_t pixel);
+    uint64_t pixel, jitter, light, lobe, roulette, sequence;
+};
+
+// The streams that every path of one pixel shares, worked out once for the pixel rather than at
+// every path's bounce: a stream depends on (seed, pixel, value, bounce), not on the path, and
+// hashing its key into scramble seeds is a good part of a path vertex's own work. Bounces
+// 0..cachedBounces()-1 are held; a path going deeper works out its streams itself.
+class PixelStreams {
+public:
+    static constexpr int kMaxCachedBounces = 16;
+
+    // For the paths of a render whose light samples, lobe choices and roulette reach at most
+    // bounce depth - 1 (a path of depth K scatters at bounces 0..K-1).
+    PixelStreams(uint64_t seed, uint64_t pixel, int depth);
+
+    const PixelKeys& keys() const { return keys_; }
+    int cachedBounces() const { return cachedBounces_; }
+    const SobolStream& jitter() const { return jitter_; }
+    const SobolStream& light(int bounce) const { return light_[static_cast<size_t>(bounce)]; }
+    const SobolStream& lobe(int bounce) const { return lobe_[static_cast<size_t>(bounce)]; }
+    const SobolStream& roulette(int bounce) const { return roulette_[static_cast<size_t>(bounce)]; }
+    uint64_t sequenceKey(int bounce) const { return sequence_[static_cast<size_t>(bounce)]; }
+
+    // The key of the stream at `bounce` of the value whose pixel key is `valueKey`.
+    static uint64_t streamKey(uint64_t valueKey, int bounce);
+
+private:
+    PixelKeys keys_;
+    int cachedBounces_;
+    SobolStream jitter_;
+    std::array<SobolStream, kMaxCachedBounces> light_, lobe_, roulette_;
+    std::array<uint64_t, kMaxCachedBounces> sequence_;
+};
+
 class PathSamples {
 public:
     PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step);
+    // The same numbers, bit for bit, from the pixel's shared streams; `pixel` outlives this.
+    PathSamples(const PixelStreams& pixel, uint32_t pass, int step);
 
     // Sub-pixel position of the camera ray, uniform on [0,1)^2; a (0,2)-sequence over the pixel.
     glm::vec2 pixelJitter() const;
@@ -55,21 +96,20 @@ public:
     // a single light needs.
     glm::vec2 lightPoint(int bounce) const;
 
-    uint64_t pixelKey() const { return pixelKey_; }
+    uint64_t pixelKey() const { return keys_.pixel; }
     uint32_t pass() const { return pass_; }
     int step() const { return step_; }
 
 private:
+    PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step);
     // A uniform random point of the path: a hash of the path's key and `dimension`.
     glm::vec2 point(uint64_t dimension) const;
-    // The key of the pixel's stream at `bounce` for the value whose tag key is `tagKey` (one of
-    // those below).
-    static uint64_t streamKey(uint64_t tagKey, int bounce);
+    bool cached(int bounce) const { return streams_ && bounce < streams_->cachedBounces(); }
+    SobolStream lightStream(int bounce) const;
 
-    uint64_t pixelKey_;
+    PixelKeys keys_;
+    const PixelStreams* streams_;  // the pixel's shared streams, or none
     uint64_t pathKey_;
-    // The pixel's key with each value's tag folded in, once per path rather than at every bounce.
-    uint64_t lightKey_, lobeKey_, rouletteKey_, sequenceKey_;
     uint32_t pixelIndex_;  // the path's number n = 24 pass + step within the pixel's streams
     uint32_t pass_;
     int step_;

@@ -101,19 +101,6 @@ uint32_t multiply(const ByteImages& images, uint32_t index) {
 // 24 significant bits to a float in [0, 1): never rounds up to 1.
 float toUnitFloat(uint32_t fixedPoint) { return static_cast<float>(fixedPoint >> 8) * 0x1p-24f; }
 
-// A stream's four 32-bit scramble seeds, two from each of two hashes of its key: the index
-// shuffle's and one per coordinate.
-struct StreamSeeds {
-    explicit StreamSeeds(uint64_t streamKey)
-        : first(mixBits(streamKey)), second(mixBits(first)) {}
-    uint32_t index() const { return static_cast<uint32_t>(first); }
-    uint32_t coordinate(int dimension) const {
-        return static_cast<uint32_t>(dimension == 0 ? first >> 32 : dimension == 1 ? second : second >> 32);
-    }
-    uint64_t first;
-    uint64_t second;
-};
-
 }  // namespace
 
 uint32_t sobolFirstCoordinate(uint32_t index) { return reverseBits(index); }
@@ -143,24 +130,33 @@ float scrambledCoordinate(uint32_t reversedCoordinate, uint32_t seed) {
 
 }  // namespace
 
-glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey) {
-    const StreamSeeds seeds(streamKey);
-    const uint32_t shuffled = owenScramble(index, seeds.index());
-    return {scrambledCoordinate(shuffled, seeds.coordinate(0)),
-            scrambledCoordinate(multiply(kSecondDimensionReversed, shuffled), seeds.coordinate(1))};
+// The four 32-bit seeds, two from each of two hashes of the key.
+SobolStream::SobolStream(uint64_t streamKey) {
+    const uint64_t first = mixBits(streamKey);
+    const uint64_t second = mixBits(first);
+    indexSeed_ = static_cast<uint32_t>(first);
+    coordinateSeeds_[0] = static_cast<uint32_t>(first >> 32);
+    coordinateSeeds_[1] = static_cast<uint32_t>(second);
+    coordinateSeeds_[2] = static_cast<uint32_t>(second >> 32);
 }
 
-float scrambledSobolValue(uint32_t index, uint64_t streamKey) {
-    const StreamSeeds seeds(streamKey);
-    return scrambledCoordinate(owenScramble(index, seeds.index()), seeds.coordinate(0));
+uint32_t SobolStream::shuffled(uint32_t index) const { return owenScramble(index, indexSeed_); }
+
+glm::vec2 SobolStream::point(uint32_t index) const {
+    const uint32_t i = shuffled(index);
+    return {scrambledCoordinate(i, coordinateSeeds_[0]),
+            scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1])};
 }
 
-glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey) {
-    const StreamSeeds seeds(streamKey);
-    const uint32_t shuffled = owenScramble(index, seeds.index());
-    return {scrambledCoordinate(shuffled, seeds.coordinate(0)),
-            scrambledCoordinate(multiply(kSecondDimensionReversed, shuffled), seeds.coordinate(1)),
-            scrambledCoordinate(multiply(kThirdDimensionReversed, shuffled), seeds.coordinate(2))};
+float SobolStream::value(uint32_t index) const {
+    return scrambledCoordinate(shuffled(index), coordinateSeeds_[0]);
+}
+
+glm::vec3 SobolStream::point3(uint32_t index) const {
+    const uint32_t i = shuffled(index);
+    return {scrambledCoordinate(i, coordinateSeeds_[0]),
+            scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1]),
+            scrambledCoordinate(multiply(kThirdDimensionReversed, i), coordinateSeeds_[2])};
 }
 
 }  // namespace strata

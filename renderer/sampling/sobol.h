@@ -36,13 +36,29 @@ uint32_t sobolThirdCoordinate(uint32_t index);
 // bit k and the bits above it.
 uint32_t owenScramble(uint32_t value, uint32_t seed);
 
-// Point `index` of the scrambled, shuffled sequence of stream `streamKey`, in [0,1)^2.
-glm::vec2 scrambledSobolPoint(uint32_t index, uint64_t streamKey);
-// The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput sequence:
-// every aligned block of 2^m values has one value in each interval [k 2^-m, (k+1) 2^-m)), and
-// for the first three, shuffled by one index scramble so that the three stay jointly a net. A
-// stream's 3D point starts with its 2D point, which starts with its value.
-float scrambledSobolValue(uint32_t index, uint64_t streamKey);
-glm::vec3 scrambledSobolPoint3(uint32_t index, uint64_t streamKey);
+// One scrambled, shuffled sequence, chosen by its key: the index shuffle's and each coordinate's
+// scramble seeds are hashes of the key, worked out once, so that a caller drawing many points of
+// one stream (a pixel's paths share theirs, path_samples.h) hashes the key once.
+class SobolStream {
+public:
+    SobolStream() = default;  // the stream of zero seeds, to be assigned
+    explicit SobolStream(uint64_t streamKey);
+
+    // Point `index` in [0,1)^2.
+    glm::vec2 point(uint32_t index) const;
+    // The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput
+    // sequence: every aligned block of 2^m values has one value in each interval
+    // [k 2^-m, (k+1) 2^-m)), and for the first three, shuffled by one index scramble so that the
+    // three stay jointly a net. A stream's 3D point starts with its 2D point, which starts with
+    // its value.
+    float value(uint32_t index) const;
+    glm::vec3 point3(uint32_t index) const;
+
+private:
+    uint32_t shuffled(uint32_t index) const;
+
+    uint32_t indexSeed_ = 0;
+    uint32_t coordinateSeeds_[3] = {0, 0, 0};
+};
 
 }  // namespace strata

@@ -43,7 +43,7 @@ TEST_CASE("sobol: every aligned block of 2^m points is a (0,m,2)-net, scrambled 
             std::vector<glm::dvec2> scrambled;
             for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
                 plain.emplace_back(sobolFirstCoordinate(i) * 0x1p-32, sobolSecondCoordinate(i) * 0x1p-32);
-                const glm::vec2 p = scrambledSobolPoint(i, 0x1234567u + block);
+                const glm::vec2 p = SobolStream(0x1234567u + block).point(i);
                 scrambled.emplace_back(p.x, p.y);
             }
             INFO("m " << m << " block " << block);
@@ -72,10 +72,10 @@ TEST_CASE("sobol: the third dimension has Joe and Kuo's direction numbers and ma
                 std::vector<glm::dvec3> points;
                 bool extendsPoint2 = true;
                 for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
-                    const glm::vec3 p = scrambledSobolPoint3(i, 0xabcdefu + block);
+                    const glm::vec3 p = SobolStream(0xabcdefu + block).point3(i);
                     if (scrambled) {
                         // The 2D point of the same stream is its first two coordinates, bit for bit.
-                        const glm::vec2 p2 = scrambledSobolPoint(i, 0xabcdefu + block);
+                        const glm::vec2 p2 = SobolStream(0xabcdefu + block).point(i);
                         extendsPoint2 = extendsPoint2 && p.x == p2.x && p.y == p2.y;
                     }
                     points.push_back(scrambled ? glm::dvec3(p)
@@ -109,10 +109,10 @@ TEST_CASE("sobol: a scrambled value sequence puts one of 2^m values in each inte
             std::vector<int> counts(size_t{1} << m, 0);
             bool stratified = true;
             for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
-                const float u = scrambledSobolValue(i, 0x51u + block);
+                const float u = SobolStream(0x51u + block).value(i);
                 stratified = stratified && ++counts[static_cast<size_t>(std::ldexp(u, m))] == 1;
                 // The first coordinate of the 2D point with the same stream: one sequence.
-                stratified = stratified && u == scrambledSobolPoint(i, 0x51u + block).x;
+                stratified = stratified && u == SobolStream(0x51u + block).point(i).x;
             }
             INFO("m " << m << " block " << block);
             CHECK(stratified);
@@ -144,7 +144,7 @@ TEST_CASE("sobol: each scrambled point is uniform over the streams (chi-square)"
         constexpr int kStreams = 64000;
         std::vector<int> counts(kBins * kBins, 0);
         for (int s = 0; s < kStreams; ++s) {
-            const glm::vec2 p = scrambledSobolPoint(index, hashCombine(99, s));
+            const glm::vec2 p = SobolStream(hashCombine(99, s)).point(index);
             ++counts[static_cast<int>(p.x * kBins) * kBins + static_cast<int>(p.y * kBins)];
         }
         const double expected = static_cast<double>(kStreams) / (kBins * kBins);
