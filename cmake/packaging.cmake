@@ -21,6 +21,9 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # strata_VERSION_ARCH.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# The viewer's software offscreen context opens OSMesa at run time rather than linking it
+# (app/viewer/offscreen_context.cpp), so dpkg-shlibdeps cannot see it; CPack adds this line to its.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libosmesa6")
 # Programs `strata bench` runs when present: mpiexec for its rank comparison, gnuplot for its
 # plots, Embree's tutorial path tracer for --vs-embree.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "openmpi-bin, gnuplot-nox, embree-tools, blender")

@@ -169,11 +169,11 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                         const PixelStreams* streams = nullptr;
                         for (int step = firstStep; step < endStep; ++step) {
                             if (shareStreams && !streams) {
-                                streams = &batchStreams.emplace_back(settings_.seed, pixel, depth);
+                                streams = &batchStreams.emplace_back(settings_.seed, pixel, pass, depth);
                             }
                             batchPixels.push_back(pixel);
                             if (streams) {
-                                batchSamples.emplace_back(*streams, pass, step);
+                                batchSamples.emplace_back(*streams, step);
                             } else {
                                 batchSamples.emplace_back(settings_.seed, pixel, pass, step);
                             }

@@ -30,8 +30,9 @@ uint64_t PixelStreams::streamKey(uint64_t valueKey, int bounce) {
     return hashCombine(valueKey, static_cast<uint64_t>(bounce));
 }
 
-PixelStreams::PixelStreams(uint64_t seed, uint64_t pixel, int depth)
+PixelStreams::PixelStreams(uint64_t seed, uint64_t pixel, uint32_t pass, int depth)
     : keys_(seed, pixel),
+      schedule_(keys_.pixel, pass, depth),
       cachedBounces_(std::clamp(depth, 0, kMaxCachedBounces)),
       jitter_(keys_.jitter) {
     for (int bounce = 0; bounce < cachedBounces_; ++bounce) {
@@ -54,8 +55,8 @@ PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uin
 PathSamples::PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step)
     : PathSamples(PixelKeys(seed, pixel), nullptr, pass, step) {}
 
-PathSamples::PathSamples(const PixelStreams& pixel, uint32_t pass, int step)
-    : PathSamples(pixel.keys(), &pixel, pass, step) {}
+PathSamples::PathSamples(const PixelStreams& shared, int step)
+    : PathSamples(shared.keys(), &shared, shared.pass(), step) {}
 
 glm::vec2 PathSamples::point(uint64_t dimension) const {
     const uint64_t bits = hashCombine(pathKey_, dimension);
@@ -72,7 +73,13 @@ glm::vec2 PathSamples::bouncePoint(int bounce) const {
 }
 
 int PathSamples::stratum(int bounce) const {
-    if (!schedule_) schedule_.emplace(keys_.pixel, pass_, step_);
+    if (!schedule_) {
+        if (streams_) {
+            schedule_.emplace(streams_->schedule(), step_);
+        } else {
+            schedule_.emplace(keys_.pixel, pass_, step_);
+        }
+    }
     return schedule_->stratum(bounce);
 }
 

@@ -30,19 +30,22 @@ struct PixelKeys {
     uint64_t pixel, jitter, light, lobe, roulette, sequence;
 };
 
-// The streams that every path of one pixel shares, worked out once for the pixel rather than at
-// every path's bounce: a stream depends on (seed, pixel, value, bounce), not on the path, and
-// hashing its key into scramble seeds is a good part of a path vertex's own work. Bounces
-// 0..cachedBounces()-1 are held; a path going deeper works out its streams itself.
+// The streams and the stratum schedule's keys that every path of one pixel in one pass shares,
+// worked out once rather than at every path's bounce: they depend on (seed, pixel, pass, value,
+// bounce), not on the path, and hashing keys into scramble seeds is a good part of a path
+// vertex's own work. Bounces 0..cachedBounces()-1 are held; a path going deeper works out its
+// streams itself.
 class PixelStreams {
 public:
-    static constexpr int kMaxCachedBounces = 16;
+    static constexpr int kMaxCachedBounces = PassSchedule::kMaxBounces;
 
-    // For the paths of a render whose light samples, lobe choices and roulette reach at most
-    // bounce depth - 1 (a path of depth K scatters at bounces 0..K-1).
-    PixelStreams(uint64_t seed, uint64_t pixel, int depth);
+    // For the paths of a render whose light samples, lobe choices, roulette and strata reach at
+    // most bounce depth - 1 (a path of depth K scatters at bounces 0..K-1).
+    PixelStreams(uint64_t seed, uint64_t pixel, uint32_t pass, int depth);
 
     const PixelKeys& keys() const { return keys_; }
+    uint32_t pass() const { return schedule_.pass(); }
+    const PassSchedule& schedule() const { return schedule_; }
     int cachedBounces() const { return cachedBounces_; }
     const SobolStream& jitter() const { return jitter_; }
     const SobolStream& light(int bounce) const { return light_[static_cast<size_t>(bounce)]; }
@@ -55,6 +58,7 @@ public:
 
 private:
     PixelKeys keys_;
+    PassSchedule schedule_;
     int cachedBounces_;
     SobolStream jitter_;
     std::array<SobolStream, kMaxCachedBounces> light_, lobe_, roulette_;
@@ -64,8 +68,8 @@ private:
 class PathSamples {
 public:
     PathSamples(uint64_t seed, uint64_t pixel, uint32_t pass, int step);
-    // The same numbers, bit for bit, from the pixel's shared streams; `pixel` outlives this.
-    PathSamples(const PixelStreams& pixel, uint32_t pass, int step);
+    // The same numbers, bit for bit, from the streams of the pixel's pass; `shared` outlives this.
+    PathSamples(const PixelStreams& shared, int step);
 
     // Sub-pixel position of the camera ray, uniform on [0,1)^2; a (0,2)-sequence over the pixel.
     glm::vec2 pixelJitter() const;

@@ -23,6 +23,8 @@
 // stratification of bounce 3 would need 24^3 = 13824 passes per cycle, and until a cycle completes
 // a deep bounce's stratum would stay tied to the first bounce's, a per-pixel error that does not
 // shrink with more passes.
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace strata {
@@ -40,15 +42,45 @@ int permuteStratum(int index, uint64_t key);
 // random key is `pixelKey` (PathSamples::pixelKey).
 int scheduledStratum(uint64_t pixelKey, uint32_t pass, int step, int bounce);
 
+// What the schedule of one pixel in one pass hashes, which the pass's 24 paths share: the
+// delivery order's key and each bounce's permutation key, for bounces 0..bounces()-1.
+class PassSchedule {
+public:
+    static constexpr int kMaxBounces = 16;
+
+    PassSchedule(uint64_t pixelKey, uint32_t pass, int bounces);
+
+    uint32_t pass() const { return pass_; }
+    int bounces() const { return bounces_; }
+    uint64_t deliveryKey() const { return deliveryKey_; }
+    uint64_t permutationKey() const { return permutationKey_; }
+    uint64_t stratumKey(int bounce) const { return stratumKeys_[static_cast<size_t>(bounce)]; }
+
+    // The keys themselves, for a schedule that works them out alone.
+    static uint64_t deliveryKey(uint64_t pixelKey, uint32_t pass);
+    static uint64_t permutationKey(uint64_t pixelKey);
+    static uint64_t stratumKey(uint64_t permutationKey, uint32_t pass, int bounce);
+
+private:
+    uint64_t deliveryKey_;
+    uint64_t permutationKey_;
+    uint32_t pass_;
+    int bounces_;
+    std::array<uint64_t, kMaxBounces> stratumKeys_;
+};
+
 // The same schedule with the work that depends only on the path (c = order_p(i) and the pixel's
 // permutation key) done once per path rather than at every bounce: a path tracer asks for every
-// bounce of a path in turn. PathSchedule(k, p, i).stratum(b) == scheduledStratum(k, p, i, b).
+// bounce of a path in turn. PathSchedule(k, p, i).stratum(b) == scheduledStratum(k, p, i, b), and
+// so is the stratum of a path whose pass's keys are shared (`shared` outlives it).
 class PathSchedule {
 public:
     PathSchedule(uint64_t pixelKey, uint32_t pass, int step);
+    PathSchedule(const PassSchedule& shared, int step);
     int stratum(int bounce) const;
 
 private:
+    const PassSchedule* shared_ = nullptr;
     uint64_t permutationKey_;  // the pixel's key for its per-bounce permutations sigma_b
     uint32_t pass_;
     int canonical_;            // c = order_p(i)

@@ -196,12 +196,12 @@ TEST_CASE("path samples: from a pixel's shared streams they are the per-path num
     // A pixel's paths may share its streams (PixelStreams) or work each out alone: the numbers
     // must not depend on which, at cached bounces and past them (depth 3 caches bounces 0..2).
     for (uint64_t pixel : {0u, 5u, 1234567u}) {
-        const PixelStreams shared(11, pixel, 3);
-        CHECK(shared.cachedBounces() == 3);
-        for (uint32_t pass : {0u, 1u, 17u}) {
+        for (uint32_t pass : {0u, 1u, 17u, 600u}) {
+            const PixelStreams shared(11, pixel, pass, 3);
+            CHECK(shared.cachedBounces() == 3);
             for (int step : {0, 9, 23}) {
                 const PathSamples alone(11, pixel, pass, step);
-                const PathSamples fromShared(shared, pass, step);
+                const PathSamples fromShared(shared, step);
                 CHECK(fromShared.pixelKey() == alone.pixelKey());
                 CHECK(fromShared.pixelJitter() == alone.pixelJitter());
                 for (int bounce = 0; bounce < 6; ++bounce) {
@@ -211,6 +211,7 @@ TEST_CASE("path samples: from a pixel's shared streams they are the per-path num
                     CHECK(fromShared.lobeChoice(bounce) == alone.lobeChoice(bounce));
                     CHECK(fromShared.roulette(bounce) == alone.roulette(bounce));
                     CHECK(fromShared.bouncePoint(bounce) == alone.bouncePoint(bounce));
+                    CHECK(fromShared.stratum(bounce) == alone.stratum(bounce));
                     CHECK(fromShared.stratumSequencePoint(bounce).stratum == alone.stratumSequencePoint(bounce).stratum);
                     CHECK(fromShared.stratumSequencePoint(bounce).point == alone.stratumSequencePoint(bounce).point);
                 }
@@ -218,6 +219,6 @@ TEST_CASE("path samples: from a pixel's shared streams they are the per-path num
         }
     }
     // A depth past the cache holds only kMaxCachedBounces; depth 0 none.
-    CHECK(PixelStreams(1, 2, 1000).cachedBounces() == PixelStreams::kMaxCachedBounces);
-    CHECK(PixelStreams(1, 2, 0).cachedBounces() == 0);
+    CHECK(PixelStreams(1, 2, 3, 1000).cachedBounces() == PixelStreams::kMaxCachedBounces);
+    CHECK(PixelStreams(1, 2, 3, 0).cachedBounces() == 0);
 }
