@@ -123,10 +123,9 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
     if (control.firstRow < 0 || control.firstRow > endRow) throw Error("renderStep: bad row range");
     const std::atomic<bool>* cancel = control.cancel;
     const std::vector<uint8_t>* skip = control.skip;
-    // A pixel's paths share its streams (path_samples.h) when it gets several in this call; for
-    // one or two, working out every bounce's streams would cost more than each path's own.
-    constexpr int kMinPathsToShareStreams = 4;
-    const bool shareStreams = endStep - firstStep >= kMinPathsToShareStreams;
+    // A pixel's paths share its streams (path_samples.h) when it gets more than one in this call
+    // (the viewer renders its first pass one step at a time).
+    const bool shareStreams = endStep - firstStep > 1;
     const int depth = settings_.integrator.depth;
     arena_->execute([&] {
         tbb::parallel_for(

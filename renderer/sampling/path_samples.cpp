@@ -34,15 +34,7 @@ PixelStreams::PixelStreams(uint64_t seed, uint64_t pixel, uint32_t pass, int dep
     : keys_(seed, pixel),
       schedule_(keys_.pixel, pass, depth),
       cachedBounces_(std::clamp(depth, 0, kMaxCachedBounces)),
-      jitter_(keys_.jitter) {
-    for (int bounce = 0; bounce < cachedBounces_; ++bounce) {
-        const auto b = static_cast<size_t>(bounce);
-        light_[b] = SobolStream(streamKey(keys_.light, bounce));
-        lobe_[b] = SobolStream(streamKey(keys_.lobe, bounce));
-        roulette_[b] = SobolStream(streamKey(keys_.roulette, bounce));
-        sequence_[b] = streamKey(keys_.sequence, bounce);
-    }
-}
+      jitter_(keys_.jitter) {}
 
 PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step)
     : keys_(keys),
@@ -85,8 +77,7 @@ int PathSamples::stratum(int bounce) const {
 
 PathSamples::StratumPoint PathSamples::stratumSequencePoint(int bounce) const {
     const int id = stratum(bounce);
-    const uint64_t bounceKey = cached(bounce) ? streams_->sequenceKey(bounce)
-                                              : PixelStreams::streamKey(keys_.sequence, bounce);
+    const uint64_t bounceKey = PixelStreams::streamKey(keys_.sequence, bounce);
     return {id, SobolStream(hashCombine(bounceKey, static_cast<uint64_t>(id))).point(pass_)};
 }
 

@@ -33,8 +33,9 @@ struct PixelKeys {
 // The streams and the stratum schedule's keys that every path of one pixel in one pass shares,
 // worked out once rather than at every path's bounce: they depend on (seed, pixel, pass, value,
 // bounce), not on the path, and hashing keys into scramble seeds is a good part of a path
-// vertex's own work. Bounces 0..cachedBounces()-1 are held; a path going deeper works out its
-// streams itself.
+// vertex's own work. Each stream is worked out when a path first asks for it, so sharing never
+// costs more than each path working out its own. Bounces 0..cachedBounces()-1 are held; a path
+// going deeper works out its streams itself. Not thread-safe: one thread's paths share it.
 class PixelStreams {
 public:
     static constexpr int kMaxCachedBounces = PassSchedule::kMaxBounces;
@@ -48,21 +49,37 @@ public:
     const PassSchedule& schedule() const { return schedule_; }
     int cachedBounces() const { return cachedBounces_; }
     const SobolStream& jitter() const { return jitter_; }
-    const SobolStream& light(int bounce) const { return light_[static_cast<size_t>(bounce)]; }
-    const SobolStream& lobe(int bounce) const { return lobe_[static_cast<size_t>(bounce)]; }
-    const SobolStream& roulette(int bounce) const { return roulette_[static_cast<size_t>(bounce)]; }
-    uint64_t sequenceKey(int bounce) const { return sequence_[static_cast<size_t>(bounce)]; }
+    // For bounce < cachedBounces().
+    const SobolStream& light(int bounce) const { return light_.at(keys_.light, bounce); }
+    const SobolStream& lobe(int bounce) const { return lobe_.at(keys_.lobe, bounce); }
+    const SobolStream& roulette(int bounce) const { return roulette_.at(keys_.roulette, bounce); }
 
     // The key of the stream at `bounce` of the value whose pixel key is `valueKey`.
     static uint64_t streamKey(uint64_t valueKey, int bounce);
 
 private:
+    // One value's streams by bounce, each worked out on its first use.
+    class LazyStreams {
+    public:
+        const SobolStream& at(uint64_t valueKey, int bounce) const {
+            const uint32_t bit = 1u << bounce;
+            if (!(ready_ & bit)) {
+                streams_[static_cast<size_t>(bounce)] = SobolStream(streamKey(valueKey, bounce));
+                ready_ |= bit;
+            }
+            return streams_[static_cast<size_t>(bounce)];
+        }
+
+    private:
+        mutable std::array<SobolStream, kMaxCachedBounces> streams_;
+        mutable uint32_t ready_ = 0;
+    };
+
     PixelKeys keys_;
     PassSchedule schedule_;
     int cachedBounces_;
     SobolStream jitter_;
-    std::array<SobolStream, kMaxCachedBounces> light_, lobe_, roulette_;
-    std::array<uint64_t, kMaxCachedBounces> sequence_;
+    LazyStreams light_, lobe_, roulette_;
 };
 
 class PathSamples {
