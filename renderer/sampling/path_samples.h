@@ -33,8 +33,9 @@ struct PixelKeys {
 // The streams and the stratum schedule's keys that every path of one pixel in one pass shares,
 // worked out once rather than at every path's bounce: they depend on (seed, pixel, pass, value,
 // bounce), not on the path, and hashing keys into scramble seeds is a good part of a path
-// vertex's own work. Each stream is worked out when a path first asks for it, so sharing never
-// costs more than each path working out its own. Bounces 0..cachedBounces()-1 are held; a path
+// vertex's own work. Each stream is worked out when a path first asks for it, so sharing costs
+// no stream that no path uses; the schedule's keys (a hash per bounce) are worked out with the
+// pixel, whether or not its sampler stratifies. Bounces 0..cachedBounces()-1 are held; a path
 // going deeper works out its streams itself. Not thread-safe: one thread's paths share it.
 class PixelStreams {
 public:
