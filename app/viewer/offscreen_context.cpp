@@ -66,9 +66,12 @@ private:
 // program linked against it), `render` included, which never draws.
 class OsMesaLibrary {
 public:
+    // The soname of Mesa's OSMesa ABI.
+    static constexpr const char* kSoname = "libOSMesa.so.8";
+
     OsMesaLibrary() {
-        // The soname of Mesa's OSMesa ABI. RTLD_NODELETE: LLVM is not made to be unloaded.
-        library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+        // RTLD_NODELETE: LLVM is not made to be unloaded.
+        library_ = dlopen(kSoname, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
         if (!library_) throw Error(std::string("OSMesa: ") + dlerror());
         createContextAttribs = resolve<decltype(&OSMesaCreateContextAttribs)>("OSMesaCreateContextAttribs");
         makeCurrent = resolve<decltype(&OSMesaMakeCurrent)>("OSMesaMakeCurrent");
@@ -90,7 +93,7 @@ private:
         void* symbol = dlsym(library_, name);
         if (!symbol) {
             dlclose(library_);
-            throw Error(std::string("OSMesa: no ") + name + " in libOSMesa.so.8");
+            throw Error(std::string("OSMesa: no ") + name + " in " + kSoname);
         }
         return reinterpret_cast<Function>(symbol);
     }

@@ -53,34 +53,34 @@ int permuteStratum(int index, uint64_t key) {
     return static_cast<int>(rotated >= kStrataCount ? rotated - kStrataCount : rotated);
 }
 
-uint64_t PassSchedule::deliveryKey(uint64_t pixelKey, uint32_t pass) {
+uint64_t PassSchedule::makeDeliveryKey(uint64_t pixelKey, uint32_t pass) {
     return hashCombine(hashCombine(pixelKey, kDeliveryOrderTag), pass);
 }
 
-uint64_t PassSchedule::permutationKey(uint64_t pixelKey) { return hashCombine(pixelKey, kBouncePermutationTag); }
+uint64_t PassSchedule::makePermutationKey(uint64_t pixelKey) { return hashCombine(pixelKey, kBouncePermutationTag); }
 
 // sigma_b's key: the pixel's own for the product-stratified bounces, a fresh one every pass from
 // kProductStratifiedBounces on (header).
-uint64_t PassSchedule::stratumKey(uint64_t permutationKey, uint32_t pass, int bounce) {
+uint64_t PassSchedule::makeStratumKey(uint64_t permutationKey, uint32_t pass, int bounce) {
     const uint64_t bounceKey = hashCombine(permutationKey, static_cast<uint64_t>(bounce));
     return bounce < kProductStratifiedBounces ? bounceKey : hashCombine(bounceKey, pass);
 }
 
 PassSchedule::PassSchedule(uint64_t pixelKey, uint32_t pass, int bounces)
-    : deliveryKey_(deliveryKey(pixelKey, pass)),
-      permutationKey_(permutationKey(pixelKey)),
+    : deliveryKey_(makeDeliveryKey(pixelKey, pass)),
+      permutationKey_(makePermutationKey(pixelKey)),
       pass_(pass),
       bounces_(std::clamp(bounces, 0, kMaxBounces)),
       stratumKeys_{} {
     for (int bounce = 0; bounce < bounces_; ++bounce) {
-        stratumKeys_[static_cast<size_t>(bounce)] = stratumKey(permutationKey_, pass, bounce);
+        stratumKeys_[static_cast<size_t>(bounce)] = makeStratumKey(permutationKey_, pass, bounce);
     }
 }
 
 PathSchedule::PathSchedule(uint64_t pixelKey, uint32_t pass, int step)
-    : permutationKey_(PassSchedule::permutationKey(pixelKey)),
+    : permutationKey_(PassSchedule::makePermutationKey(pixelKey)),
       pass_(pass),
-      canonical_(permuteStratum(step, PassSchedule::deliveryKey(pixelKey, pass))) {}
+      canonical_(permuteStratum(step, PassSchedule::makeDeliveryKey(pixelKey, pass))) {}
 
 PathSchedule::PathSchedule(const PassSchedule& shared, int step)
     : shared_(&shared),
@@ -91,7 +91,7 @@ PathSchedule::PathSchedule(const PassSchedule& shared, int step)
 int PathSchedule::stratum(int bounce) const {
     const uint64_t key = shared_ && bounce < shared_->bounces()
                              ? shared_->stratumKey(bounce)
-                             : PassSchedule::stratumKey(permutationKey_, pass_, bounce);
+                             : PassSchedule::makeStratumKey(permutationKey_, pass_, bounce);
     if (bounce < kProductStratifiedBounces) {
         const int t = static_cast<int>((canonical_ + productOffset(pass_, bounce)) % kStrataCount);
         return permuteStratum(t, key);

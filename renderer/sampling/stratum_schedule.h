@@ -57,9 +57,9 @@ public:
     uint64_t stratumKey(int bounce) const { return stratumKeys_[static_cast<size_t>(bounce)]; }
 
     // The keys themselves, for a schedule that works them out alone.
-    static uint64_t deliveryKey(uint64_t pixelKey, uint32_t pass);
-    static uint64_t permutationKey(uint64_t pixelKey);
-    static uint64_t stratumKey(uint64_t permutationKey, uint32_t pass, int bounce);
+    static uint64_t makeDeliveryKey(uint64_t pixelKey, uint32_t pass);
+    static uint64_t makePermutationKey(uint64_t pixelKey);
+    static uint64_t makeStratumKey(uint64_t permutationKey, uint32_t pass, int bounce);
 
 private:
     uint64_t deliveryKey_;
