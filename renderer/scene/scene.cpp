@@ -196,7 +196,7 @@ std::optional<RayHit> Scene::hitOf(uint32_t geometry, uint32_t primitive, float 
     return RayHit{t, u, v, triangle};
 }
 
-Scene::Scene(MeshData mesh)
+Scene::Scene(MeshData mesh, Traversal traversal)
     : mesh_(std::move(mesh)),
       materials_(validated(mesh_).materials),
       lights_(cutoutsLast(orientedToNormals(mesh_))) {
@@ -231,8 +231,9 @@ Scene::Scene(MeshData mesh)
     // Embree reads the arrays in place: positions padded by the 4 bytes it may read past the end.
     mesh_.positions.reserve(mesh_.positions.size() + 1);
     rtcScene_ = rtcNewScene(device);
-    // ROBUST: watertight traversal, so rays do not slip through shared edges.
-    rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
+    summary_.roundingGapShare = roundingGapShare(mesh_);
+    summary_.watertight = usesWatertightTest(traversal, mesh_);
+    if (summary_.watertight) rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
     const size_t count = mesh_.triangles.size();
     size_t first = 0;
@@ -347,11 +348,12 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     const glm::vec3 weighted2 = b2 * p2;
     SurfaceHit hit;
     hit.point = weighted0 + weighted1 + weighted2;
-    // Rounding of the barycentric sum (pbrt-v4's bound), plus Embree's own error: its watertight
-    // test works relative to the ray origin in sheared coordinates that mix all three axes, so
-    // a ray leaving a plane such as x = 0 can find that plane again at t ~ 0 unless the origin
-    // clears it by a few ulp of the triangle's largest coordinate (translating the vertices by the
-    // origin and shearing them each round once per axis: about 3 u). gamma(4) covers that, and
+    // Rounding of the barycentric sum (pbrt-v4's bound), plus Embree's own error: both its tests
+    // work relative to the ray origin (the watertight one in sheared coordinates that mix all
+    // three axes), so a ray leaving a plane such as x = 0 can find that plane again at t ~ 0
+    // unless the origin clears it by a few ulp of the triangle's largest coordinate (translating
+    // the vertices by the origin and shearing them each round once per axis: about 3 u; the fast
+    // test is held to the scenes where this suffices, traversal_precision.h). gamma(4) covers that, and
     // no more: a much larger bound, gamma(16), at 1e6 from the origin pushes new rays about 1 unit
     // off the surface, out through the wall of a unit furnace (tests/scene/test_scene_robustness.cpp:
     // no re-hit in 320k spawned rays even with gamma(1), 122 in 20k with no such term).

@@ -20,6 +20,7 @@
 #include "materials/material_table.h"
 #include "scene/cutout_filter.h"
 #include "scene/mesh.h"
+#include "scene/traversal_precision.h"
 
 namespace strata {
 
@@ -50,6 +51,8 @@ struct SceneSummary {
     double emittingArea = 0.0;
     float maxAlbedo = 0.0f;    // upper bound on the albedo of the materials in use: max Kd + max Ks
     float maxEmission = 0.0f;  // largest Ke component in use
+    double roundingGapShare = 0.0;  // traversal_precision.h
+    bool watertight = true;         // traced with Embree's watertight (robust) triangle test
 };
 
 class Scene {
@@ -59,8 +62,8 @@ public:
     // it emits from) is the side its normals show. Triangles of cut-out materials (with a
     // coverage texture) are moved after all others, in their order, for their own Embree
     // geometry (cutout_filter.h): mesh().triangles is in that order, which is the one hits and
-    // lights use.
-    explicit Scene(MeshData mesh);
+    // lights use. `traversal` picks Embree's triangle test (traversal_precision.h).
+    explicit Scene(MeshData mesh, Traversal traversal = Traversal::Automatic);
     ~Scene();
     Scene(Scene&& other) noexcept;
     Scene& operator=(Scene&&) = delete;

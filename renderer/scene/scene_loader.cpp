@@ -115,10 +115,12 @@ std::string describeScene(const LoadedScene& loaded) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "%s: %zu triangles (%zu degenerate dropped, %zu non-finite vertices), "
-                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights, extent %.4g x %.4g x %.4g",
+                  "%zu emitting (area %.4g), max albedo %.3g, %zu point lights, "
+                  "%s triangle test (rounding gap share %.2g), extent %.4g x %.4g x %.4g",
                   loaded.scenePath().string().c_str(), s.triangles, loaded.report.droppedTriangles,
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
-                  loaded.scene.mesh().pointLights.size(), extent.x, extent.y, extent.z);
+                  loaded.scene.mesh().pointLights.size(), s.watertight ? "watertight" : "fast",
+                  s.roundingGapShare, extent.x, extent.y, extent.z);
     const size_t warnings = loaded.report.warnings.size();
     if (warnings == 0) return line;
     return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));

@@ -118,15 +118,23 @@ TEST_CASE("render extremes: a 1x1 image and an 8192x8192 image") {
     // every one of the 67M pixels, the last included, holds exactly its one sample of the
     // emission. That is indexing and tiling at the image's full extent with its 4.8 GB of
     // accumulation state (72 bytes a pixel); a whole pass would only repeat it 24 times.
+    // The furnace near the origin is traced with Embree's fast triangle test, which lets a few
+    // rays in 10^8 through its edges (traversal_precision.h): such a pixel holds its sample of
+    // nothing, and there may be no more of them than the scene's rounding gap share predicts.
     const Camera big = furnaceCamera(8192, 8192);
     AccumulationBuffer image(8192, 8192);
     ProgressiveRenderer renderer(furnace, big, withDepth(0));
     renderer.renderStep(image, 0, 0);
     size_t wrong = 0;
+    size_t escaped = 0;
     for (size_t i = 0; i < image.pixelCount(); ++i) {
-        wrong += image.sampleCount(i) != 1 || image.mean(i) != glm::dvec3(1.0);
+        const bool sawNothing = image.mean(i) == glm::dvec3(0.0);
+        escaped += sawNothing;
+        wrong += image.sampleCount(i) != 1 || (image.mean(i) != glm::dvec3(1.0) && !sawNothing);
     }
     CHECK(wrong == 0);
+    CAPTURE(escaped);
+    CHECK(static_cast<double>(escaped) <= furnace.summary().roundingGapShare * static_cast<double>(image.pixelCount()));
     CHECK(renderer.counters().paths == image.pixelCount());
     // The camera's corner rays are finite, unit and symmetric.
     const Ray first = big.generateRay(0, 0, {0.0f, 0.0f});
