@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <CLI/App.hpp>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -46,6 +47,9 @@ void RenderOptions::addTo(CLI::App& command) {
                        "Adaptive sampling: a pixel stops receiving passes at this relative "
                        "standard error (0: off)")
         ->capture_default_str();
+    command.add_flag("--watertight", watertight,
+                     "Always trace with Embree's watertight triangle test (default: only where the "
+                     "scene's rounding gap share needs it)");
 }
 
 std::vector<std::string> RenderOptions::arguments() const {
@@ -79,6 +83,7 @@ std::vector<std::string> RenderOptions::arguments() const {
     if (noiseThreshold != defaults.noiseThreshold) {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
+    if (watertight) args.push_back("--watertight");
     return args;
 }
 
@@ -149,7 +154,8 @@ Environment RenderOptions::environment() const {
 }
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
-    LoadedScene loaded = strata::parseScene(std::move(files));
+    LoadedScene loaded =
+        strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic);
     // The --env options override the scene description's environment; without them it stands.
     if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
     return loaded;

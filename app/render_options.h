@@ -7,7 +7,10 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include <CLI/App.hpp>
+
+namespace CLI {
+class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
+}
 
 #include "scene/camera.h"
 #include "integrator/progressive_renderer.h"
@@ -31,6 +34,7 @@ struct RenderOptions {
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
+    bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);

@@ -75,7 +75,7 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
     LoadReport report;
     ParsedScene parsed = parseSceneFile(bundle, &report);
     MeshData& mesh = parsed.mesh;
@@ -99,7 +99,7 @@ LoadedScene parseScene(SceneBundle bundle) {
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
-    Scene scene(std::move(mesh));
+    Scene scene(std::move(mesh), traversal);
     if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
     return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
 }

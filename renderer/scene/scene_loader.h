@@ -31,16 +31,17 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
-// own (glTF), else framing the scene.
+// own (glTF), else framing the scene; `traversal` picks Embree's triangle test
+// (traversal_precision.h).
 // Throws strata::Error naming the bad file.
-LoadedScene parseScene(SceneBundle bundle);
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic);
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
-// One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights, the
-// extent (the bounding box's size, in the scene's units: metres for glTF) and how many warnings
+// One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
+// the triangle test and the rounding gap share that chose it, the extent (the bounding box's size, in the scene's units: metres for glTF) and how many warnings
 // loading gave.
 std::string describeScene(const LoadedScene& loaded);
 

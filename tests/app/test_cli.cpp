@@ -221,3 +221,16 @@ TEST_CASE("cli: next-event estimation and Russian roulette are on by default, ea
     REQUIRE(help.exitCode == 0);
     CHECK(help.out.find("--no-nee") != std::string::npos);
 }
+
+TEST_CASE("cli: the load summary names the triangle test; --watertight forces the watertight one") {
+    // The furnace near the origin (rounding gap share 3e-6) takes the fast test by default; forced
+    // to the watertight one it renders the same furnace value.
+    const auto automatic = test::runStrata("render " + furnace() + " --depth 3 --spp 24 --width 16 --height 16 --json");
+    REQUIRE(automatic.exitCode == 0);
+    CHECK(automatic.err.find("fast triangle test") != std::string::npos);
+    const auto forced =
+        test::runStrata("render " + furnace() + " --depth 3 --spp 24 --width 16 --height 16 --watertight --json");
+    REQUIRE(forced.exitCode == 0);
+    CHECK(forced.err.find("watertight triangle test") != std::string::npos);
+    CHECK(std::abs(nlohmann::json::parse(forced.out)["mean_rgb"][0].get<double>() - 1.875) < 0.01 * 1.875);
+}
