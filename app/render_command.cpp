@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include <CLI/App.hpp>
 #include <cstdio>
 #include <memory>
 #include <optional>

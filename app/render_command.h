@@ -1,5 +1,8 @@
 #pragma once
-#include <CLI/App.hpp>
+
+namespace CLI {
+class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
+}
 
 namespace strata {
 // `strata render`: the headless progressive batch renderer.

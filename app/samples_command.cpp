@@ -1,5 +1,6 @@
 #include "samples_command.h"
 
+#include <CLI/App.hpp>
 #include <cstdio>
 #include <memory>
 

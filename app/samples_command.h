@@ -1,5 +1,8 @@
 #pragma once
-#include <CLI/App.hpp>
+
+namespace CLI {
+class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
+}
 
 namespace strata {
 // `strata samples`: the directions a sampler gives one pixel, as CSV, for plots and outside checks.

@@ -1,5 +1,6 @@
 #include "bench/bench_command.h"
 
+#include <CLI/App.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,6 +1,9 @@
 #pragma once
 // `strata bench`: run time against error, throughput against Embree's ceiling, and a peer.
-#include <CLI/App.hpp>
+
+namespace CLI {
+class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
+}
 
 namespace strata {
 
