@@ -16,6 +16,7 @@
 
 #include "display_pipeline.h"
 #include "lights/environment.h"
+#include "scene/traversal_precision.h"
 #include "render_worker.h"
 
 namespace strata::viewer {
@@ -44,6 +45,8 @@ struct ViewerSettings {
     // keeps its own. The map stays here while another kind is chosen, so going back to it
     // reads nothing.
     Environment environment;
+    // The triangle test of every scene opened (--watertight: always the watertight one).
+    Traversal traversal = Traversal::Automatic;
 
     // The sides the worker renders in the current mode.
     std::vector<SideConfig> sides() const;

@@ -232,7 +232,7 @@ Scene::Scene(MeshData mesh, Traversal traversal)
     mesh_.positions.reserve(mesh_.positions.size() + 1);
     rtcScene_ = rtcNewScene(device);
     summary_.roundingGapShare = roundingGapShare(mesh_);
-    summary_.watertight = usesWatertightTest(traversal, mesh_);
+    summary_.watertight = usesWatertightTest(traversal, summary_.roundingGapShare);
     if (summary_.watertight) rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
     const size_t count = mesh_.triangles.size();
@@ -353,10 +353,11 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     // three axes), so a ray leaving a plane such as x = 0 can find that plane again at t ~ 0
     // unless the origin clears it by a few ulp of the triangle's largest coordinate (translating
     // the vertices by the origin and shearing them each round once per axis: about 3 u; the fast
-    // test is held to the scenes where this suffices, traversal_precision.h). gamma(4) covers that, and
-    // no more: a much larger bound, gamma(16), at 1e6 from the origin pushes new rays about 1 unit
-    // off the surface, out through the wall of a unit furnace (tests/scene/test_scene_robustness.cpp:
-    // no re-hit in 320k spawned rays even with gamma(1), 122 in 20k with no such term).
+    // test is kept to the scenes where that suffices, traversal_precision.h). gamma(4) covers
+    // that, and no more: a much larger bound, gamma(16), at 1e6 from the origin pushes new rays
+    // about 1 unit off the surface, out through the wall of a unit furnace
+    // (tests/scene/test_scene_robustness.cpp: no re-hit in 320k spawned rays even with gamma(1),
+    // 122 in 20k with no such term).
     const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
     hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
                      glm::vec3(gammaBound(4) * maxComponent(largest));

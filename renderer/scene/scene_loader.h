@@ -41,8 +41,8 @@ LoadedScene loadScene(const std::filesystem::path& path,
                       const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
-// the triangle test and the rounding gap share that chose it, the extent (the bounding box's size, in the scene's units: metres for glTF) and how many warnings
-// loading gave.
+// the triangle test and the rounding gap share that chose it, the extent (the bounding box's
+// size, in the scene's units: metres for glTF) and how many warnings loading gave.
 std::string describeScene(const LoadedScene& loaded);
 
 // Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.

@@ -25,14 +25,14 @@ double roundingGapShare(const MeshData& mesh) {
     return 0x1p-24 * largestCoordinate * largestPerimeterPerArea;
 }
 
-bool usesWatertightTest(Traversal requested, const MeshData& mesh) {
+bool usesWatertightTest(Traversal requested, double gapShare) {
     switch (requested) {
         case Traversal::Watertight: return true;
         case Traversal::Fast: return false;
         case Traversal::Automatic: break;
     }
     // Written so that a share that is not a number (an infinite coordinate) is watertight too.
-    return !(roundingGapShare(mesh) <= kTolerableGapShare);
+    return !(gapShare <= kTolerableGapShare);
 }
 
 }  // namespace strata

@@ -38,8 +38,8 @@ inline constexpr double kTolerableGapShare = 1e-5;
 // The largest u M P / A over the mesh's triangles of nonzero area (above); 0 when there is none.
 double roundingGapShare(const MeshData& mesh);
 
-// Whether a scene of `mesh` is traced with the watertight test: `requested`, with Automatic
-// resolved by the share.
-bool usesWatertightTest(Traversal requested, const MeshData& mesh);
+// Whether a scene whose rounding gap share is `gapShare` is traced with the watertight test:
+// `requested`, with Automatic resolved by the share.
+bool usesWatertightTest(Traversal requested, double gapShare);
 
 }  // namespace strata
