@@ -1,8 +1,6 @@
 #pragma once
 
-namespace CLI {
-class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
-}
+#include "cli_forward.h"
 
 namespace strata {
 // `strata render`: the headless progressive batch renderer.

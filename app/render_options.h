@@ -8,9 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;  // CLI/App.hpp, included where options are registered: it is slow to compile
-}
+#include "cli_forward.h"
 
 #include "scene/camera.h"
 #include "integrator/progressive_renderer.h"

@@ -1,10 +1,19 @@
 #include "render_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <glm/common.hpp>
 
 namespace strata::test {
+
+glm::dvec3 uniformUnitVector(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    const double z = 2.0 * uniform(rng) - 1.0;
+    const double phi = 2.0 * M_PI * uniform(rng);
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
 
 AccumulationBuffer renderPasses(const Scene& scene, const Camera& camera,
                                 const RenderSettings& settings, uint32_t passes) {

@@ -2,6 +2,7 @@
 // Rendering small images in tests and judging them statistically: per-pixel means with their
 // standard errors, and the comparisons the stress tests share.
 #include <cstdint>
+#include <random>
 #include <vector>
 #include <glm/vec3.hpp>
 
@@ -20,6 +21,9 @@ AccumulationBuffer renderPasses(const Scene& scene, const Camera& camera,
 // The mesh and the camera pose moved by p -> scale * p + offset (computed in double, rounded once).
 MeshData transformMesh(MeshData mesh, double scale, const glm::dvec3& offset);
 CameraPose transformPose(const CameraPose& pose, double scale, const glm::dvec3& offset);
+
+// A direction uniform on the unit sphere, from two uniform numbers of `rng` (z, then the azimuth).
+glm::dvec3 uniformUnitVector(std::mt19937_64& rng);
 
 // Pixel luminance means: the pixels are independent estimates of their own values.
 std::vector<double> pixelLuminances(const AccumulationBuffer& buffer);

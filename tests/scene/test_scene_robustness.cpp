@@ -96,12 +96,7 @@ TEST_CASE("scene robustness: rays spawned from a hit never hit the same triangle
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     auto magnitude = [&] { return std::pow(10.0, -8.0 + 16.0 * uniform(rng)); };
     auto signedMagnitude = [&] { return (uniform(rng) < 0.5 ? -1.0 : 1.0) * magnitude(); };
-    auto unitVector = [&] {
-        const double z = 2.0 * uniform(rng) - 1.0;
-        const double phi = 2.0 * M_PI * uniform(rng);
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
-    };
+    auto unitVector = [&] { return test::uniformUnitVector(rng); };
 
     int triangles = 0;
     int spawned = 0;

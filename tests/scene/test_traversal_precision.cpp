@@ -34,13 +34,11 @@ int escapedRays(const MeshData& sphere, const glm::dvec3& offset, Traversal trav
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     int escaped = 0;
     for (int i = 0; i < rays; ++i) {
-        const double z = 2.0 * uniform(rng) - 1.0;
-        const double phi = 2.0 * M_PI * uniform(rng);
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        const glm::dvec3 direction = test::uniformUnitVector(rng);
         // Starts spread over a cube of side 0.5, so that rays cross the edges at every angle.
         const glm::dvec3 start =
             offset + 0.5 * glm::dvec3(uniform(rng) - 0.5, uniform(rng) - 0.5, uniform(rng) - 0.5);
-        const Ray ray{glm::vec3(start), glm::vec3(r * std::cos(phi), r * std::sin(phi), z)};
+        const Ray ray{glm::vec3(start), glm::vec3(direction)};
         if (!scene.intersect(ray)) ++escaped;
     }
     return escaped;
