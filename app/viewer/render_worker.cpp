@@ -12,8 +12,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A step that takes longer than this is rendered in bands of rows, one band about this long, and
-// the display shows each band as it finishes instead of waiting for the whole step. Not shorter:
+// A step, or a group of steps, that takes longer than this is rendered in bands of rows, one band
+// about this long, and the display shows each band as it finishes instead of waiting for them all. Not shorter:
 // every snapshot is a full-image texture upload on the UI thread (44 MB for a 1280x720 split
 // view), which at 20 per second pushed llvmpipe's UI frame times from 15-22 to 50-64 ms.
 constexpr double kBandSeconds = 0.25;
@@ -24,9 +24,12 @@ constexpr int kRenderNiceness = 5;
 constexpr int kFirstStepBands = 4;
 // After the first pass a step changes the image little, and a snapshot for every step (each one
 // built here, uploaded and drawn by the UI) cost the viewer 10% of its throughput at 640x360,
-// where a step takes 48 ms. From the second pass on, fast steps are rendered together in groups
-// that take at least this long (within the pass), and the display updates after each group.
-constexpr double kStepGroupSeconds = 0.25;
+// where a step takes 48 ms; groups of 0.25 s still cost it 4% of its CPU, in the pixels' shared
+// streams worked out anew for every group (path_samples.h). From the second pass on, steps are
+// rendered in groups of about this long (within the pass), band by band (kBandSeconds), so the
+// display still updates four times a second. Not longer: the sides of the split view take turns
+// by group, and one side should not run ahead of the other by more than this.
+constexpr double kStepGroupSeconds = 2.0;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
@@ -37,11 +40,11 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The steps the next renderSteps call renders: one in the first pass, which the display shows
-// step by step, and while a step is slow (it is split in bands instead); later, as many as take
-// kStepGroupSeconds, within the pass and the target spp.
+// The steps the next renderSteps call renders: the image's first step alone, so that the whole
+// image shows one path per pixel as soon as it can (and the step's cost is known); then as many as
+// take kStepGroupSeconds, within the pass and the target spp.
 int stepsAtOnce(uint32_t pass, int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) {
-    if (pass == 0 || stepSeconds <= 0.0) return 1;
+    if ((pass == 0 && step == 0) || stepSeconds <= 0.0) return 1;
     const double wanted = std::ceil(kStepGroupSeconds / stepSeconds);
     int steps = static_cast<int>(std::min<double>(wanted, kPathsPerPass - step));
     if (targetSpp > spp) steps = std::min(steps, static_cast<int>(targetSpp - spp));
