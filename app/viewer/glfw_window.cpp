@@ -61,6 +61,10 @@ void GlfwWindow::beginFrame() {
 
 void GlfwWindow::waitForEvent() { glfwWaitEvents(); }
 
+void GlfwWindow::waitForEvent(double seconds) {
+    if (seconds > 0.0) glfwWaitEventsTimeout(seconds);
+}
+
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }

@@ -25,6 +25,9 @@ public:
     // Blocks until the window has an event (input, resize, expose, a dropped file): how the
     // viewer rests without using CPU once rendering has reached its target.
     void waitForEvent();
+    // The same, for at most `seconds`: how it paces its frames while the render goes on and
+    // nobody touches anything, yet answers input at once.
+    void waitForEvent(double seconds);
     void swapBuffers();
     bool shouldClose() const;
     void framebufferSize(int& width, int& height) const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <thread>
 #define GLFW_INCLUDE_NONE  // key codes only; OpenGL comes from glad
 #include <GLFW/glfw3.h>
@@ -48,7 +49,8 @@ bool finished(const ViewRunOptions& options, const ViewerSettings& settings, int
 }
 
 // The frame loop shared by both contexts: `beginFrame` does the platform part, `endFrame` presents,
-// `waitForEvent` blocks until there is input and says whether it could (only a window can).
+// `waitForEvent(until)` blocks until there is input (or a new snapshot), or until `until` if given,
+// and says whether it could (only a window can).
 template <typename BeginFrame, typename EndFrame, typename WaitForEvent>
 ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& target,
                    BeginFrame beginFrame, EndFrame endFrame, WaitForEvent waitForEvent) {
@@ -75,8 +77,11 @@ ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& t
         const bool quiet = Clock::now() - lastInput >= kIdleAfter;
         // Rendering done and nobody touching anything: nothing on screen can change until an
         // event comes (input, or a snapshot from the worker), so block on it: no CPU at rest.
-        if (quiet && resting(viewer.shownSnapshot()) && waitForEvent()) continue;
-        std::this_thread::sleep_until(frameStart + (quiet ? idleFrame : activeFrame));
+        if (quiet && resting(viewer.shownSnapshot()) && waitForEvent(std::nullopt)) continue;
+        // While the render goes on, a quiet window draws at the idle rate, and at once when input
+        // or a snapshot comes.
+        const auto next = frameStart + (quiet ? idleFrame : activeFrame);
+        if (!(quiet && waitForEvent(next))) std::this_thread::sleep_until(next);
     }
     report.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     report.last = viewer.shownSnapshot() ? std::make_shared<WorkerSnapshot>(*viewer.shownSnapshot()) : nullptr;
@@ -143,7 +148,7 @@ ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings
             // Wait for the GPU (llvmpipe) so that frame times are what a display would show.
             [] { glFinish(); },
             // Offscreen there are no events to wait for: scripted frames go on at the idle rate.
-            [] { return false; });
+            [](std::optional<Clock::time_point>) { return false; });
         report.context = context->backendName();
         return report;
     }
@@ -168,8 +173,12 @@ ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings
                 return !window.shouldClose();
             },
             [&] { window.swapBuffers(); },
-            [&] {
-                window.waitForEvent();
+            [&](std::optional<Clock::time_point> until) {
+                if (until) {
+                    window.waitForEvent(std::chrono::duration<double>(*until - Clock::now()).count());
+                } else {
+                    window.waitForEvent();
+                }
                 return true;
             });
     }
