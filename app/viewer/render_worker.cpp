@@ -22,13 +22,13 @@ constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands w
 constexpr int kRenderNiceness = 5;
 // Bands of a job's first step, whose cost is not known yet: its first image comes sooner.
 constexpr int kFirstStepBands = 4;
-// After the first pass a step changes the image little, and a snapshot for every step (each one
-// built here, uploaded and drawn by the UI) cost the viewer 10% of its throughput at 640x360,
-// where a step takes 48 ms; groups of 0.25 s still cost it 4% of its CPU, in the pixels' shared
-// streams worked out anew for every group (path_samples.h). From the second pass on, steps are
-// rendered in groups of about this long (within the pass), band by band (kBandSeconds), so the
-// display still updates four times a second. Not longer: the sides of the split view take turns
-// by group, and one side should not run ahead of the other by more than this.
+// Steps one at a time cost throughput: a snapshot for every step (built here, uploaded and drawn
+// by the UI) cost the viewer 10% at 640x360, where a step takes 48 ms, and every call works out
+// the pixels' shared streams anew (path_samples.h): with the first pass step by step and groups
+// of 0.25 s the viewer took 1.19x its present time (640x360, 144 spp). So after the image's first
+// step, steps are rendered in groups of about this long (within the pass), band by band
+// (kBandSeconds), and the display still updates four times a second. Not longer: the sides of
+// the split view take turns by group, and one should not run ahead of the other by more than this.
 constexpr double kStepGroupSeconds = 2.0;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {

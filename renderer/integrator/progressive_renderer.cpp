@@ -124,7 +124,7 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
     const std::atomic<bool>* cancel = control.cancel;
     const std::vector<uint8_t>* skip = control.skip;
     // A pixel's paths share its streams (path_samples.h) when it gets more than one in this call
-    // (the viewer renders its first pass one step at a time).
+    // (the viewer renders the image's first step alone).
     const bool shareStreams = endStep - firstStep > 1;
     const int depth = settings_.integrator.depth;
     arena_->execute([&] {

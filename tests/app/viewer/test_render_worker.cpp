@@ -78,7 +78,7 @@ TEST_CASE("render worker: memory stays flat over 10^4 passes, and a higher targe
 }
 
 TEST_CASE("render worker: steps rendered several at once stop exactly at a target inside a pass") {
-    // After its first pass the worker renders fast steps several at a time; a target that is not
+    // After the image's first step the worker renders steps several at a time; a target that is not
     // a whole number of passes must still be met exactly, the image's samples those of the steps.
     RenderWorker worker;
     WorkerConfig config = furnaceOnOneThread(6, 5, 2);
