@@ -13,9 +13,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // A step, or a group of steps, that takes longer than this is rendered in bands of rows, one band
-// about this long, and the display shows each band as it finishes instead of waiting for them all. Not shorter:
-// every snapshot is a full-image texture upload on the UI thread (44 MB for a 1280x720 split
-// view), which at 20 per second pushed llvmpipe's UI frame times from 15-22 to 50-64 ms.
+// about this long, and the display shows each band as it finishes instead of waiting for them
+// all. Not shorter: every snapshot is a full-image texture upload on the UI thread (44 MB for a
+// 1280x720 split view), which at 20 per second pushed llvmpipe's UI frame times from 15-22 to
+// 50-64 ms.
 constexpr double kBandSeconds = 0.25;
 constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands waste its threads
 // Nice value of the render threads: the UI thread stays responsive with every core rendering.

@@ -1,13 +1,15 @@
 // The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat,
-// raising the target spp continues the same accumulation instead of restarting it, steps
-// rendered several at a time stop exactly at a target spp inside a pass, and its error against a
-// reference is the bench's.
+// raising the target spp continues the same accumulation instead of restarting it, the image's
+// first step is shown alone and later steps in groups, steps rendered several at a time stop
+// exactly at a target spp inside a pass, and its error against a reference is the bench's.
 #include <doctest/doctest.h>
 
 #include <chrono>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <thread>
+#include <vector>
 #include <unistd.h>
 
 #include "film/image_metrics.h"
@@ -92,6 +94,33 @@ TEST_CASE("render worker: steps rendered several at once stop exactly at a targe
         const auto& counts = done->sides.at(0).image.meanAndCount;
         for (size_t p = 0; p < counts.size() / 4; ++p) CHECK(counts[4 * p + 3] == static_cast<float>(target));
     }
+}
+
+TEST_CASE("render worker: the image's first step is shown alone, the later steps in groups") {
+    // One path per pixel first, as soon as it can; then, on so small an image, the rest of each
+    // pass at once: every snapshot after the first step closes a pass.
+    RenderWorker worker;
+    std::mutex mutex;
+    std::vector<uint32_t> shown;  // the spp of every snapshot, taken as the UI takes them
+    worker.setPublishCallback([&] {
+        const auto snapshot = worker.latest();
+        std::lock_guard lock(mutex);
+        if (snapshot && (shown.empty() || shown.back() != snapshot->spp)) shown.push_back(snapshot->spp);
+    });
+    WorkerConfig config = furnaceOnOneThread(8, 8, 2);
+    config.targetSpp = 24 * 4;
+    worker.configure(config);
+    restAt(worker, config.targetSpp);
+    std::lock_guard lock(mutex);
+    std::vector<uint32_t> rendered;
+    for (uint32_t spp : shown) {
+        if (spp > 0) rendered.push_back(spp);
+    }
+    CAPTURE(rendered.size());
+    REQUIRE(!rendered.empty());
+    CHECK(rendered.front() == 1);
+    for (size_t i = 1; i < rendered.size(); ++i) CHECK(rendered[i] % 24 == 0);
+    CHECK(rendered.back() == config.targetSpp);
 }
 
 TEST_CASE("render worker: its error against a reference is imageError's RMSE of the same render") {
