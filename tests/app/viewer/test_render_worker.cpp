@@ -99,9 +99,10 @@ TEST_CASE("render worker: steps rendered several at once stop exactly at a targe
 TEST_CASE("render worker: the image's first step is shown alone, the later steps in groups") {
     // One path per pixel first, as soon as it can; then, on so small an image, the rest of each
     // pass at once: every snapshot after the first step closes a pass.
-    RenderWorker worker;
+    // Declared before the worker, whose callback uses them, so that they outlive it.
     std::mutex mutex;
     std::vector<uint32_t> shown;  // the spp of every snapshot, taken as the UI takes them
+    RenderWorker worker;
     worker.setPublishCallback([&] {
         const auto snapshot = worker.latest();
         std::lock_guard lock(mutex);
