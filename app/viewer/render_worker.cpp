@@ -41,11 +41,11 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The steps the next renderSteps call renders: the image's first step alone, so that the whole
-// image shows one path per pixel as soon as it can (and the step's cost is known); then as many as
-// take kStepGroupSeconds, within the pass and the target spp.
-int stepsAtOnce(uint32_t pass, int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) {
-    if ((pass == 0 && step == 0) || stepSeconds <= 0.0) return 1;
+// The steps the next renderSteps call renders: a job's first step alone, before its cost is
+// known, so that the whole image shows one path per pixel as soon as it can; then as many as take
+// kStepGroupSeconds, within the pass and the target spp.
+int stepsAtOnce(int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) {
+    if (stepSeconds <= 0.0) return 1;
     const double wanted = std::ceil(kStepGroupSeconds / stepSeconds);
     int steps = static_cast<int>(std::min<double>(wanted, kPathsPerPass - step));
     if (targetSpp > spp) steps = std::min(steps, static_cast<int>(targetSpp - spp));
@@ -242,7 +242,7 @@ void RenderWorker::run() {
 bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
     double stepSeconds = 0.0;  // all sides, one step
     for (const auto& side : job.sides) stepSeconds += std::max(0.0, side.lastStepSeconds);
-    const int steps = stepsAtOnce(job.pass(), job.step(), stepSeconds, job.spp(), targetSpp);
+    const int steps = stepsAtOnce(job.step(), stepSeconds, job.spp(), targetSpp);
     for (auto& side : job.sides) {
         RenderSession& session = side.session;
         const uint64_t pathsBefore = session.counters().paths;
