@@ -40,7 +40,7 @@ float strataBsdfMixturePdf(const LayeredBsdf& bsdf, const glm::vec3& wo, const g
 }
 
 // The path's stratum at `bounce` and the point placed in it: plain random, as the paper's
-// estimators take it, or refined pass by pass from the stratum's Sobol' stream.
+// estimators take it, or refined pass by pass by the stratum's low-discrepancy sequence.
 PathSamples::StratumPoint stratumPoint(const PathSamples& samples, int bounce, bool refined) {
     return refined ? samples.stratumSequencePoint(bounce)
                    : PathSamples::StratumPoint{samples.stratum(bounce), samples.bouncePoint(bounce)};

@@ -13,10 +13,10 @@
 //                     (strata24_cosine.h), weight 24 PSA_i f: each stratum weighted by its exact
 //                     projected solid angle;
 //   strata24-qmc    - strata24 with each stratum's points taken from its own Owen-scrambled
-//                     Sobol' stream (PathSamples::stratumSequencePoint), so successive passes
+//                     Sobol' sequence (PathSamples::stratumSequencePoint), so successive passes
 //                     refine every stratum (the paper's future work);
 //   strata24-cosine-qmc - strata24-cosine with the points of strata24-qmc: cosine-weighted inside
-//                     each stratum, each stratum refined by its Sobol' stream;
+//                     each stratum, each stratum refined by its Sobol' sequence;
 //   strata24-bsdf   - the flagship: for the diffuse layer one direction per pass in each of the
 //                     24 strata carried onto the cosine-weighted hemisphere (strata24_warped.h:
 //                     every warped stratum holds 1/24 of the cosine measure, so the weight is

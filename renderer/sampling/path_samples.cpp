@@ -36,6 +36,25 @@ PixelStreams::PixelStreams(uint64_t seed, uint64_t pixel, uint32_t pass, int dep
       cachedBounces_(std::clamp(depth, 0, kMaxCachedBounces)),
       jitter_(keys_.jitter) {}
 
+namespace {
+
+PixelStreams::StratumStreamPoint stratumStreamPointOf(uint64_t sequenceKey, int bounce, uint32_t pass) {
+    const uint64_t streamKey = PixelStreams::streamKey(sequenceKey, bounce);
+    return {streamKey, SobolStream(streamKey).pointBits(pass)};
+}
+
+}  // namespace
+
+const PixelStreams::StratumStreamPoint& PixelStreams::stratumStreamPoint(int bounce) const {
+    const uint32_t bit = 1u << bounce;
+    StratumStreamPoint& shared = stratumStreamPoints_[static_cast<size_t>(bounce)];
+    if (!(stratumStreamPointsReady_ & bit)) {
+        shared = stratumStreamPointOf(keys_.sequence, bounce, pass());
+        stratumStreamPointsReady_ |= bit;
+    }
+    return shared;
+}
+
 PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step)
     : keys_(keys),
       streams_(streams),
@@ -77,8 +96,10 @@ int PathSamples::stratum(int bounce) const {
 
 PathSamples::StratumPoint PathSamples::stratumSequencePoint(int bounce) const {
     const int id = stratum(bounce);
-    const uint64_t bounceKey = PixelStreams::streamKey(keys_.sequence, bounce);
-    return {id, SobolStream(hashCombine(bounceKey, static_cast<uint64_t>(id))).point(pass_)};
+    const PixelStreams::StratumStreamPoint shared =
+        cached(bounce) ? streams_->stratumStreamPoint(bounce) : stratumStreamPointOf(keys_.sequence, bounce, pass_);
+    const uint64_t shift = hashCombine(shared.streamKey, static_cast<uint64_t>(id));
+    return {id, unitPoint(shared.point ^ glm::uvec2(static_cast<uint32_t>(shift), static_cast<uint32_t>(shift >> 32)))};
 }
 
 float PathSamples::lobeChoice(int bounce) const {

@@ -54,6 +54,13 @@ public:
     const SobolStream& light(int bounce) const { return light_.at(keys_.light, bounce); }
     const SobolStream& lobe(int bounce) const { return lobe_.at(keys_.lobe, bounce); }
     const SobolStream& roulette(int bounce) const { return roulette_.at(keys_.roulette, bounce); }
+    // The bounce's stratum stream (PathSamples::stratumSequencePoint): its key, from which each
+    // stratum's shift comes, and its point for this pass, which every stratum shifts.
+    struct StratumStreamPoint {
+        uint64_t streamKey;
+        glm::uvec2 point;
+    };
+    const StratumStreamPoint& stratumStreamPoint(int bounce) const;
 
     // The key of the stream at `bounce` of the value whose pixel key is `valueKey`.
     static uint64_t streamKey(uint64_t valueKey, int bounce);
@@ -81,6 +88,8 @@ private:
     int cachedBounces_;
     SobolStream jitter_;
     LazyStreams light_, lobe_, roulette_;
+    mutable std::array<StratumStreamPoint, kMaxCachedBounces> stratumStreamPoints_;
+    mutable uint32_t stratumStreamPointsReady_ = 0;
 };
 
 class PathSamples {
@@ -95,10 +104,16 @@ public:
     // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
     glm::vec2 bouncePoint(int bounce) const;
     // The path's stratum at `bounce` (stratum()) and a point in [0,1)^2 for it from that
-    // stratum's own Owen-scrambled Sobol' stream (sobol.h): one stream per (pixel, bounce,
-    // stratum), indexed by the pass. Every pass uses each stratum once per bounce, so the first 2^m
-    // passes put a (0,m,2)-net in every stratum: each stratum is stratified ever more finely
-    // (strata24-qmc). The stratum comes with its point, so a bounce works it out once.
+    // stratum's own low-discrepancy sequence, indexed by the pass: point `pass` of an
+    // Owen-scrambled Sobol' stream (sobol.h) of the pixel and bounce, XORed with random bits of
+    // the stratum's own (a random digital shift). A digital shift maps every dyadic box onto
+    // another, so each stratum's sequence is still a (0,2)-sequence and the first 2^m passes put
+    // a (0,m,2)-net in every stratum: each stratum is stratified ever more finely (strata24-qmc).
+    // A shifted Owen-scrambled sequence is distributed as an Owen-scrambled one, and the strata's
+    // shifts are independent and uniform, so two strata's sequences are uncorrelated: the
+    // estimate's variance is that of one independently scrambled stream per stratum, while the
+    // pass's 24 paths share one scrambled point. The stratum comes with its point, so a bounce
+    // works it out once.
     struct StratumPoint {
         int stratum;
         glm::vec2 point;

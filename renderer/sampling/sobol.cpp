@@ -124,8 +124,8 @@ uint32_t owenScramble(uint32_t value, uint32_t seed) {
 // bit reversals per 2D point.
 namespace {
 
-float scrambledCoordinate(uint32_t reversedCoordinate, uint32_t seed) {
-    return toUnitFloat(reverseBits(scrambleUpward(reversedCoordinate, seed)));
+uint32_t scrambledCoordinate(uint32_t reversedCoordinate, uint32_t seed) {
+    return reverseBits(scrambleUpward(reversedCoordinate, seed));
 }
 
 }  // namespace
@@ -142,21 +142,25 @@ SobolStream::SobolStream(uint64_t streamKey) {
 
 uint32_t SobolStream::shuffled(uint32_t index) const { return owenScramble(index, indexSeed_); }
 
-glm::vec2 SobolStream::point(uint32_t index) const {
+glm::vec2 unitPoint(glm::uvec2 fixedPoint) { return {toUnitFloat(fixedPoint.x), toUnitFloat(fixedPoint.y)}; }
+
+glm::uvec2 SobolStream::pointBits(uint32_t index) const {
     const uint32_t i = shuffled(index);
     return {scrambledCoordinate(i, coordinateSeeds_[0]),
             scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1])};
 }
 
+glm::vec2 SobolStream::point(uint32_t index) const { return unitPoint(pointBits(index)); }
+
 float SobolStream::value(uint32_t index) const {
-    return scrambledCoordinate(shuffled(index), coordinateSeeds_[0]);
+    return toUnitFloat(scrambledCoordinate(shuffled(index), coordinateSeeds_[0]));
 }
 
 glm::vec3 SobolStream::point3(uint32_t index) const {
     const uint32_t i = shuffled(index);
-    return {scrambledCoordinate(i, coordinateSeeds_[0]),
-            scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1]),
-            scrambledCoordinate(multiply(kThirdDimensionReversed, i), coordinateSeeds_[2])};
+    return {toUnitFloat(scrambledCoordinate(i, coordinateSeeds_[0])),
+            toUnitFloat(scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1])),
+            toUnitFloat(scrambledCoordinate(multiply(kThirdDimensionReversed, i), coordinateSeeds_[2]))};
 }
 
 }  // namespace strata

@@ -11,9 +11,9 @@
 // on the digits above it; it keeps the net property and makes each point uniform on [0,1)^2, so
 // every point alone is an unbiased sample. The scramble here is the hash-based one of Burley 2020
 // ("Practical Hash-based Owen Scrambling", JCGT 9(4)), which also shuffles the order of the
-// points by Owen-scrambling the index: that decorrelates streams that share an index (one
-// stream per pixel, bounce and stratum, all indexed by the pass; one per pixel, value and bounce,
-// indexed by the path number) while each aligned block of 2^m consecutive indices still maps to
+// points by Owen-scrambling the index: that decorrelates streams that share an index (one per
+// pixel and bounce for the strata, indexed by the pass; one per pixel, value and bounce, indexed
+// by the path number) while each aligned block of 2^m consecutive indices still maps to
 // a (0,m,2)-net.
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -39,6 +39,9 @@ uint32_t owenScramble(uint32_t value, uint32_t seed);
 // One scrambled, shuffled sequence, chosen by its key: the index shuffle's and each coordinate's
 // scramble seeds are hashes of the key, worked out once, so that a caller drawing many points of
 // one stream (a pixel's paths share theirs, path_samples.h) hashes the key once.
+// A point's fixed-point coordinates as floats in [0,1)^2: their top 24 bits, never rounded up to 1.
+glm::vec2 unitPoint(glm::uvec2 fixedPoint);
+
 class SobolStream {
 public:
     SobolStream() = default;  // the stream of zero seeds, to be assigned
@@ -46,6 +49,9 @@ public:
 
     // Point `index` in [0,1)^2.
     glm::vec2 point(uint32_t index) const;
+    // The same point as 32-bit fixed-point coordinates (x = value / 2^32), for callers that shift
+    // it digitally (XOR) before it becomes a float; unitPoint(pointBits(i)) == point(i).
+    glm::uvec2 pointBits(uint32_t index) const;
     // The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput
     // sequence: every aligned block of 2^m values has one value in each interval
     // [k 2^-m, (k+1) 2^-m)), and for the first three, shuffled by one index scramble so that the
