@@ -102,12 +102,11 @@ private:
     // The MIS-weighted radiance from light `light`, reached at `hit` along `direction`.
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
-    // One light sample at `surface` (normal facing the viewer) toward wo: its shadow ray and the
-    // reflected radiance it brings, MIS-weighted against the direction sampler; nullopt when it
-    // brings nothing whatever the shadow ray finds.
+    // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
+    // (lightNumbers): its shadow ray and the reflected radiance it brings, MIS-weighted against
+    // the direction sampler; nullopt when it brings nothing whatever the shadow ray finds.
     std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                                         const LayeredBsdf& bsdf, const PathSamples& samples,
-                                         int bounce) const;
+                                         const LayeredBsdf& bsdf, const glm::vec3& u) const;
 
     // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
     // point when the scene has more than one light, the point alone for a single light with

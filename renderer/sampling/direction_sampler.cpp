@@ -39,13 +39,6 @@ float strataBsdfMixturePdf(const LayeredBsdf& bsdf, const glm::vec3& wo, const g
     return pSpecular > 0.0f ? diffuse + pSpecular * bsdf.specularPdf(wo, wi) : diffuse;
 }
 
-// The path's stratum at `bounce` and the point placed in it: plain random, as the paper's
-// estimators take it, or refined pass by pass by the stratum's low-discrepancy sequence.
-PathSamples::StratumPoint stratumPoint(const PathSamples& samples, int bounce, bool refined) {
-    return refined ? samples.stratumSequencePoint(bounce)
-                   : PathSamples::StratumPoint{samples.stratum(bounce), samples.bouncePoint(bounce)};
-}
-
 // A direction of strata24-bsdf's mixture (the warped strata and the specular lobe), weighted by the
 // mixture's density; `stratum` is -1 for a specular direction.
 SampledDirection strataBsdfMixtureSample(const LayeredBsdf& bsdf, const glm::vec3& wo, const glm::vec3& d,
@@ -74,28 +67,47 @@ bool stratifies(SamplerKind kind) {
            kind == SamplerKind::Strata24Bsdf;
 }
 
+PathSamples::StratumPoint directionNumbers(SamplerKind kind, const PathSamples& samples, int bounce) {
+    switch (kind) {
+        // The paper's estimators: a plain random point in the stratum.
+        case SamplerKind::Strata24:
+        case SamplerKind::Strata24Cosine: return {samples.stratum(bounce), samples.bouncePoint(bounce)};
+        // Refined pass by pass by the stratum's low-discrepancy sequence.
+        case SamplerKind::Strata24Qmc:
+        case SamplerKind::Strata24CosineQmc:
+        case SamplerKind::Strata24Bsdf: return samples.stratumSequencePoint(bounce);
+        case SamplerKind::Uniform:
+        case SamplerKind::Cosine:
+        case SamplerKind::Bsdf: break;
+    }
+    return {-1, samples.bouncePoint(bounce)};
+}
+
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
                                  const LayeredBsdf& bsdf, const glm::vec3& wo) {
+    return sampleDirection(kind, directionNumbers(kind, samples, bounce), samples, bounce, bsdf, wo);
+}
+
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples::StratumPoint& numbers,
+                                 const PathSamples& samples, int bounce, const LayeredBsdf& bsdf,
+                                 const glm::vec3& wo) {
+    const auto [id, u] = numbers;
     switch (kind) {
         case SamplerKind::Uniform: {
-            const glm::vec3 d = sampleUniformHemisphere(samples.bouncePoint(bounce));
+            const glm::vec3 d = sampleUniformHemisphere(u);
             return hemisphereSample(bsdf, wo, d, d.z * kHemisphereSolidAngle, -1);
         }
         case SamplerKind::Strata24:
         case SamplerKind::Strata24Qmc: {
-            const auto [id, u] = stratumPoint(samples, bounce, kind == SamplerKind::Strata24Qmc);
             const glm::vec3 d = sampleStratum(id, u);
             return hemisphereSample(bsdf, wo, d, d.z * kHemisphereSolidAngle, id);
         }
         case SamplerKind::Cosine: {
-            const glm::vec3 d = sampleCosineHemisphere(samples.bouncePoint(bounce));
+            const glm::vec3 d = sampleCosineHemisphere(u);
             return hemisphereSample(bsdf, wo, d, kPi, -1);
         }
         case SamplerKind::Strata24Cosine:
-        case SamplerKind::Strata24CosineQmc: {
-            const auto [id, u] = stratumPoint(samples, bounce, kind == SamplerKind::Strata24CosineQmc);
-            return cosineStratumSample(bsdf, wo, id, u);
-        }
+        case SamplerKind::Strata24CosineQmc: return cosineStratumSample(bsdf, wo, id, u);
         case SamplerKind::Strata24Bsdf: {
             const float pSpecular = bsdf.specularProbability(wo);
             // The specular lobe's direction lies in no particular stratum.
@@ -104,14 +116,13 @@ SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, i
                 if (!specular) return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
                 return strataBsdfMixtureSample(bsdf, wo, *specular, pSpecular, -1);
             }
-            const auto [id, u] = samples.stratumSequencePoint(bounce);
             const glm::vec3 d = sampleWarpedStratum(id, u);
             // A Lambertian surface: cosine sampling's exact weight.
             if (pSpecular == 0.0f) return hemisphereSample(bsdf, wo, d, kPi, id);
             return strataBsdfMixtureSample(bsdf, wo, d, pSpecular, id);
         }
         case SamplerKind::Bsdf: {
-            const auto s = bsdf.sample(wo, samples.bouncePoint(bounce), samples.lobeChoice(bounce));
+            const auto s = bsdf.sample(wo, u, samples.lobeChoice(bounce));
             if (!s) return {glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, glm::vec3(0.0f), -1};
             return {s->direction, s->pdf, s->weight, -1};
         }

@@ -55,8 +55,18 @@ struct SampledDirection {
                        // diffuse layer the direction lies in the stratum's warped image)
 };
 
-// The direction of bounce `bounce` of the path `samples` at a surface with material `bsdf`,
-// seen from the local direction `wo` (z > 0).
+// The numbers a sampler draws at `bounce` whatever the surface: the path's stratum (-1 for a
+// sampler that does not stratify) and the point that it maps onto the hemisphere, or into that
+// stratum. Apart from sampleDirection so that a path tracer can draw them before it works out the
+// surface: their arithmetic then overlaps that work instead of waiting for it.
+PathSamples::StratumPoint directionNumbers(SamplerKind kind, const PathSamples& samples, int bounce);
+
+// The direction of bounce `bounce` of the path `samples`, whose directionNumbers are `numbers`,
+// at a surface with material `bsdf`, seen from the local direction `wo` (z > 0).
+SampledDirection sampleDirection(SamplerKind kind, const PathSamples::StratumPoint& numbers,
+                                 const PathSamples& samples, int bounce, const LayeredBsdf& bsdf,
+                                 const glm::vec3& wo);
+// The same, drawing the numbers itself.
 SampledDirection sampleDirection(SamplerKind kind, const PathSamples& samples, int bounce,
                                  const LayeredBsdf& bsdf, const glm::vec3& wo);
 
