@@ -46,13 +46,7 @@ PixelStreams::StratumStreamPoint stratumStreamPointOf(uint64_t sequenceKey, int 
 }  // namespace
 
 const PixelStreams::StratumStreamPoint& PixelStreams::stratumStreamPoint(int bounce) const {
-    const uint32_t bit = 1u << bounce;
-    StratumStreamPoint& shared = stratumStreamPoints_[static_cast<size_t>(bounce)];
-    if (!(stratumStreamPointsReady_ & bit)) {
-        shared = stratumStreamPointOf(keys_.sequence, bounce, pass());
-        stratumStreamPointsReady_ |= bit;
-    }
-    return shared;
+    return stratumStreamPoints_.at(bounce, [&] { return stratumStreamPointOf(keys_.sequence, bounce, pass()); });
 }
 
 PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step)

@@ -30,13 +30,14 @@ struct PixelKeys {
     uint64_t pixel, jitter, light, lobe, roulette, sequence;
 };
 
-// The streams and the stratum schedule's keys that every path of one pixel in one pass shares,
-// worked out once rather than at every path's bounce: they depend on (seed, pixel, pass, value,
-// bounce), not on the path, and hashing keys into scramble seeds is a good part of a path
-// vertex's own work. Each stream is worked out when a path first asks for it, so sharing costs
-// no stream that no path uses; the schedule's keys (a hash per bounce) are worked out with the
-// pixel, whether or not its sampler stratifies. Bounces 0..cachedBounces()-1 are held; a path
-// going deeper works out its streams itself. Not thread-safe: one thread's paths share it.
+// The streams, the strata's shared point and the stratum schedule's keys that every path of one
+// pixel in one pass shares, worked out once rather than at every path's bounce: they depend on
+// (seed, pixel, pass, value, bounce), not on the path, and hashing keys into scramble seeds is a
+// good part of a path vertex's own work. Each stream (and point) is worked out when a path first
+// asks for it, so sharing costs no stream that no path uses; the schedule's keys (a hash per
+// bounce) are worked out with the pixel, whether or not its sampler stratifies. Bounces
+// 0..cachedBounces()-1 are held; a path going deeper works out its streams itself. Not
+// thread-safe: one thread's paths share it.
 class PixelStreams {
 public:
     static constexpr int kMaxCachedBounces = PassSchedule::kMaxBounces;
@@ -51,9 +52,9 @@ public:
     int cachedBounces() const { return cachedBounces_; }
     const SobolStream& jitter() const { return jitter_; }
     // For bounce < cachedBounces().
-    const SobolStream& light(int bounce) const { return light_.at(keys_.light, bounce); }
-    const SobolStream& lobe(int bounce) const { return lobe_.at(keys_.lobe, bounce); }
-    const SobolStream& roulette(int bounce) const { return roulette_.at(keys_.roulette, bounce); }
+    const SobolStream& light(int bounce) const { return stream(light_, keys_.light, bounce); }
+    const SobolStream& lobe(int bounce) const { return stream(lobe_, keys_.lobe, bounce); }
+    const SobolStream& roulette(int bounce) const { return stream(roulette_, keys_.roulette, bounce); }
     // The bounce's stratum stream (PathSamples::stratumSequencePoint): its key, from which each
     // stratum's shift comes, and its point for this pass, which every stratum shifts.
     struct StratumStreamPoint {
@@ -66,30 +67,34 @@ public:
     static uint64_t streamKey(uint64_t valueKey, int bounce);
 
 private:
-    // One value's streams by bounce, each worked out on its first use.
-    class LazyStreams {
+    // One quantity by bounce, each bounce's worked out by `make` on its first use.
+    template <class T>
+    class ByBounce {
     public:
-        const SobolStream& at(uint64_t valueKey, int bounce) const {
+        template <class Make>
+        const T& at(int bounce, const Make& make) const {
             const uint32_t bit = 1u << bounce;
             if (!(ready_ & bit)) {
-                streams_[static_cast<size_t>(bounce)] = SobolStream(streamKey(valueKey, bounce));
+                values_[static_cast<size_t>(bounce)] = make();
                 ready_ |= bit;
             }
-            return streams_[static_cast<size_t>(bounce)];
+            return values_[static_cast<size_t>(bounce)];
         }
 
     private:
-        mutable std::array<SobolStream, kMaxCachedBounces> streams_;
+        mutable std::array<T, kMaxCachedBounces> values_;
         mutable uint32_t ready_ = 0;
     };
+    static const SobolStream& stream(const ByBounce<SobolStream>& streams, uint64_t valueKey, int bounce) {
+        return streams.at(bounce, [&] { return SobolStream(streamKey(valueKey, bounce)); });
+    }
 
     PixelKeys keys_;
     PassSchedule schedule_;
     int cachedBounces_;
     SobolStream jitter_;
-    LazyStreams light_, lobe_, roulette_;
-    mutable std::array<StratumStreamPoint, kMaxCachedBounces> stratumStreamPoints_;
-    mutable uint32_t stratumStreamPointsReady_ = 0;
+    ByBounce<SobolStream> light_, lobe_, roulette_;
+    ByBounce<StratumStreamPoint> stratumStreamPoints_;
 };
 
 class PathSamples {
