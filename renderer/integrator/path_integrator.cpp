@@ -174,7 +174,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     if (scene_.materials().isBlack(triangle.material)) return false;  // its weight would be zero
     // The bounce's random numbers depend on the path, not on the surface: drawn first, their
     // arithmetic overlaps the surface's rather than lengthening the chain from the hit to the
-    // next ray (cornell_point, defaults: 3% of the CPU time).
+    // next ray (cornell_point, defaults: 5% of the CPU time).
     const PathSamples::StratumPoint directionU = directionNumbers(settings_.sampler, samples, bounce);
     const glm::vec3 lightU = sampleLights_ ? lightNumbers(samples, bounce) : glm::vec3(0.0f);
 

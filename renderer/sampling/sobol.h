@@ -36,12 +36,12 @@ uint32_t sobolThirdCoordinate(uint32_t index);
 // bit k and the bits above it.
 uint32_t owenScramble(uint32_t value, uint32_t seed);
 
-// One scrambled, shuffled sequence, chosen by its key: the index shuffle's and each coordinate's
-// scramble seeds are hashes of the key, worked out once, so that a caller drawing many points of
-// one stream (a pixel's paths share theirs, path_samples.h) hashes the key once.
 // A point's fixed-point coordinates as floats in [0,1)^2: their top 24 bits, never rounded up to 1.
 glm::vec2 unitPoint(glm::uvec2 fixedPoint);
 
+// One scrambled, shuffled sequence, chosen by its key: the index shuffle's and each coordinate's
+// scramble seeds are hashes of the key, worked out once, so that a caller drawing many points of
+// one stream (a pixel's paths share theirs, path_samples.h) hashes the key once.
 class SobolStream {
 public:
     SobolStream() = default;  // the stream of zero seeds, to be assigned
