@@ -89,7 +89,7 @@ public:
         // A flat scene keeps no per-triangle normal indices, one without UVs none (mesh.h).
         if (parsed_.mesh.normals.empty()) parsed_.mesh.triangleNormals.clear();
         if (parsed_.mesh.uvs.empty()) parsed_.mesh.triangleUvs.clear();
-        if (parsed_.camera) aimGltfCameraAtScene(*parsed_.camera, parsed_.mesh.positions);
+        if (parsed_.camera) aimGltfCameraAtScene(*parsed_.camera, parsed_.mesh);
         return std::move(parsed_);
     }
 
