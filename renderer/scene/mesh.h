@@ -52,8 +52,7 @@ struct MeshData {
     std::vector<glm::vec2> uvs;
     std::vector<std::array<uint32_t, 3>> triangleUvs;
     std::vector<Material> materials;
-    // Disjoint ranges of the triangles, in increasing order; the vertices their triangles use,
-    // none of the world triangles'.
+    // Disjoint ranges of the triangles, in increasing order, each with vertices of its own.
     std::vector<SharedMesh> sharedMeshes;
     std::vector<PointLight> pointLights;
     std::vector<DirectionalLight> directionalLights;
@@ -67,9 +66,11 @@ inline std::array<glm::vec2, 3> cornerUvs(const MeshData& mesh, size_t triangle)
     return {mesh.uvs[c[0]], mesh.uvs[c[1]], mesh.uvs[c[2]]};
 }
 
-// The corner-wise world bounding box of the mesh: of the vertices no shared mesh uses, and of each
-// placement of each shared mesh's box (a box about the placed vertices, and tight under
-// translation, scale and mirroring). {+inf, -inf} for no vertices.
+// The world bounding box of the mesh, {lower, upper} corner by corner: of all its vertices for a
+// flat mesh; with shared meshes, of the vertices the world's triangles use (a shared mesh's other
+// vertices are in its own coordinates) and of each placement of each shared mesh's box (a box
+// about the placed vertices, tight under translation, scale and mirroring). {+inf, -inf} for no
+// vertices.
 std::pair<glm::vec3, glm::vec3> worldBounds(const MeshData& mesh);
 
 // The triangles of the mesh's world: those not shared, and each shared mesh's times its placements.

@@ -75,9 +75,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
     LoadReport report;
-    ParsedScene parsed = parseSceneFile(bundle, &report);
+    ParsedScene parsed = parseSceneFile(bundle, &report, budget);
     MeshData& mesh = parsed.mesh;
     if (mesh.triangles.empty()) {
         throw Error(bundle.path.string() + ": the scene has no usable triangles");
