@@ -85,15 +85,21 @@ void splitIntoLines(std::vector<std::string>& warnings, size_t from) {
 }
 }  // namespace
 
+namespace {
+std::string counted(uint64_t n, const std::string& thing) {
+    return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+}  // namespace
+
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget) {
     if (count.stored <= budget.triangles && count.placements <= budget.triangles - count.stored) return;
-    std::string message = path + ": " + std::to_string(count.stored) + " triangles after instancing";
+    std::string message = path + ": " + counted(count.stored, "triangle") + " after instancing";
     if (count.placements > 0) {
-        message += " and " + std::to_string(count.placements) + " instances (counted as a triangle each; " +
-                   std::to_string(count.placed) + " triangles placed)";
+        message += " and " + counted(count.placements, "instance") + " (counted as a triangle each; " +
+                   counted(count.placed, "triangle") + " placed)";
     }
-    throw Error(message + " exceed the budget of " + std::to_string(budget.triangles) +
-                " triangles (--max-triangles N raises it)");
+    throw Error(message + " exceed the budget of " + counted(budget.triangles, "triangle") +
+                " (--max-triangles N raises it)");
 }
 
 ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {

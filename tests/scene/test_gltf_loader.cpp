@@ -561,3 +561,22 @@ TEST_CASE("gltf: assimp's glTF 2.0 test models load or fail with one line naming
     CHECK(engine.scene.summary().triangles == 65311);
     CHECK(engine.report.droppedTriangles == 11160);
 }
+
+TEST_CASE("gltf: the triangle budget counts stored triangles and instances from the accessors, before reading them") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const json primitive = {{"attributes", {{"POSITION", positions}}}};
+    model.meshNode(primitive);
+    model.addNode({{"mesh", 0}});  // the same primitive again: stored once, placed twice
+    model.meshNode(primitive, {{"scale", {2, 2, 2}}});
+    CHECK_NOTHROW(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{4}));
+    CHECK_THROWS_WITH_AS(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{3}),
+                         "mem/model.gltf: 1 triangle after instancing and 3 instances (counted as a triangle each; "
+                         "3 triangles placed) exceed the budget of 3 triangles (--max-triangles N raises it)",
+                         Error);
+    // An accessor that claims 3e8 positions in a 36-byte buffer is refused by the budget, from its
+    // count, before anything would be read or allocated for it.
+    model.doc["accessors"][positions]["count"] = 300000000;
+    CHECK_THROWS_WITH_AS(parse(model.gltf()),
+                         doctest::Contains("100000000 triangles after instancing and 3 instances"), Error);
+}
