@@ -329,7 +329,7 @@ std::array<int, kPacket> activeLanes(size_t count) {
 std::optional<RayHit> Scene::hitOf(uint32_t instance, uint32_t geometry, uint32_t primitive, float t, float u,
                                    float v) const {
     if (geometry == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    if (instance == RTC_INVALID_GEOMETRY_ID) {
+    if (instance == RTC_INVALID_GEOMETRY_ID) [[likely]] {
         return RayHit{t, u, v, primitive + (geometry == 1 ? firstCutout_ : 0), kNoPlacement};
     }
     const uint32_t placement = instance - kFirstPlacementID;
@@ -502,10 +502,9 @@ void Scene::occluded(std::span<const Ray> rays, std::span<const float> distances
     }
 }
 
-SurfaceHit Scene::surface(const RayHit& rayHit) const {
-    SurfaceHit hit = localSurface(rayHit);
-    if (rayHit.placement == kNoPlacement) return hit;
-    const Placement& placement = placements_[rayHit.placement];
+// The surface record at a hit in a placed shared mesh, from its own coordinates to the world's.
+// Apart from Scene::surface, so that a flat scene's hits pay a test and no more.
+[[gnu::noinline]] void Scene::placeInWorld(SurfaceHit& hit, const Placement& placement) {
     // The point and its error bound through the affine map (pbrt-v4's Transform of a Point3fi):
     // the map's own rounding, gamma(3) of each row's terms, plus the bound carried through |M|.
     // Embree moves the ray into the shared mesh's coordinates and back as well; that rounding is
@@ -524,6 +523,11 @@ SurfaceHit Scene::surface(const RayHit& rayHit) const {
     // Normals by the inverse transpose, which keeps the front side under a mirroring map (mesh.h).
     hit.normal = glm::normalize(placement.normalToWorld * hit.normal);
     hit.shadingNormal = hit.smooth ? glm::normalize(placement.normalToWorld * hit.shadingNormal) : hit.normal;
+}
+
+SurfaceHit Scene::surface(const RayHit& rayHit) const {
+    SurfaceHit hit = localSurface(rayHit);
+    if (rayHit.placement != kNoPlacement) [[unlikely]] placeInWorld(hit, placements_[rayHit.placement]);
     return hit;
 }
 

@@ -155,6 +155,7 @@ private:
     void attachTriangles(RTCScene scene, const TriangleRange& range);
     // The surface record at a hit in the triangle's own coordinates.
     SurfaceHit localSurface(const RayHit& hit) const;
+    static void placeInWorld(SurfaceHit& hit, const Placement& placement);
 
     MeshData mesh_;
     std::pair<glm::vec3, glm::vec3> bounds_;  // of the mesh as given, before its layout
