@@ -91,10 +91,11 @@ PrimitiveKey keyOf(const tinygltf::Primitive& primitive) {
             primitive.material};
 }
 
-// A node's use of one of its mesh's primitives, at the node's world transform.
-struct PrimitiveUse {
+// A node with a mesh, at its world transform: a use of each of the mesh's primitives. Kept per
+// node, not per use, so that a small file of many primitives on many nodes costs no more memory
+// here than its nodes do in tinygltf before the budget has been checked.
+struct MeshNode {
     int mesh;
-    size_t primitive;
     glm::dmat4 world;
 };
 
@@ -148,8 +149,8 @@ private:
             const glm::dmat4 world = parent * localTransform(gltf_, node, index);
             if (!isFinite(world)) fail("node " + std::to_string(index) + " has a non-finite transform");
             if (node.mesh >= 0) {
-                const tinygltf::Mesh& mesh = element(gltf_.model.meshes, node.mesh, "mesh");
-                for (size_t p = 0; p < mesh.primitives.size(); ++p) uses_.push_back({node.mesh, p, world});
+                element(gltf_.model.meshes, node.mesh, "mesh");
+                meshNodes_.push_back({node.mesh, world});
             }
             if (node.camera >= 0) takeGltfCamera(gltf_, node.camera, world, parsed_.camera);
             if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
@@ -222,20 +223,31 @@ private:
     // are placed into the world by the scene, each use's a copy: scene.h). The budget is checked
     // first, from the accessors' counts, before any geometry is read.
     void addPrimitives() {
+        // f(mesh, primitive index, world) for every use, in order.
+        const auto forEachUse = [&](auto f) {
+            for (const MeshNode& node : meshNodes_) {
+                const tinygltf::Mesh& mesh = gltf_.model.meshes[static_cast<size_t>(node.mesh)];
+                for (size_t p = 0; p < mesh.primitives.size(); ++p) f(node.mesh, p, node.world);
+            }
+        };
+        const auto primitiveOf = [&](int mesh, size_t p) -> const tinygltf::Primitive& {
+            return gltf_.model.meshes[static_cast<size_t>(mesh)].primitives[p];
+        };
         std::map<PrimitiveKey, size_t> uses;
-        for (const PrimitiveUse& use : uses_) ++uses[keyOf(primitiveOf(use))];
-        uint64_t stored = 0, placements = 0, placed = 0;
+        forEachUse([&](int mesh, size_t p, const glm::dmat4&) { ++uses[keyOf(primitiveOf(mesh, p))]; });
+        TriangleCount count;
         std::set<PrimitiveKey> counted;
-        for (const PrimitiveUse& use : uses_) {
-            const tinygltf::Primitive& primitive = primitiveOf(use);
+        forEachUse([&](int mesh, size_t p, const glm::dmat4&) {
+            const tinygltf::Primitive& primitive = primitiveOf(mesh, p);
             const PrimitiveKey key = keyOf(primitive);
             const uint64_t triangles = triangleCount(primitive);
-            const bool shared = uses[key] > 1;
-            placed += triangles;
-            if (shared) ++placements;
-            if (!shared || emits(primitive) || counted.insert(key).second) stored += triangles;
-        }
-        checkTriangleBudget(gltf_.path, {stored, placements, placed}, budget_);
+            // An emitting primitive is placed into the world at each use, as a copy (scene.h).
+            const bool instanced = uses[key] > 1 && !emits(primitive);
+            count.placed += triangles;
+            if (instanced) ++count.placements;
+            if (!instanced || counted.insert(key).second) count.stored += triangles;
+        });
+        checkTriangleBudget(gltf_.path, count, budget_);
 
         // Each shared primitive's index in the mesh's shared meshes (SIZE_MAX: it has no triangles)
         // and how many of its triangles are degenerate.
@@ -244,42 +256,38 @@ private:
             size_t degenerate = 0;
         };
         std::map<PrimitiveKey, Shared> sharedMeshes;
-        MeshData& mesh = parsed_.mesh;
-        for (const PrimitiveUse& use : uses_) {
-            const PrimitiveKey key = keyOf(primitiveOf(use));
+        MeshData& meshData = parsed_.mesh;
+        forEachUse([&](int mesh, size_t p, const glm::dmat4& world) {
+            const PrimitiveKey key = keyOf(primitiveOf(mesh, p));
             if (uses[key] == 1) {
-                addPrimitive(use.mesh, use.primitive, use.world);
-                continue;
+                addPrimitive(mesh, p, world);
+                return;
             }
             const auto [it, first] = sharedMeshes.try_emplace(key);
             Shared& shared = it->second;
             if (first) {
-                const auto firstTriangle = static_cast<uint32_t>(mesh.triangles.size());
+                const auto firstTriangle = static_cast<uint32_t>(meshData.triangles.size());
                 const size_t droppedBefore = dropped_;
-                addPrimitive(use.mesh, use.primitive, glm::dmat4(1.0));
+                addPrimitive(mesh, p, glm::dmat4(1.0));
                 shared.degenerate = dropped_ - droppedBefore;
-                const auto count = static_cast<uint32_t>(mesh.triangles.size() - firstTriangle);
-                if (count > 0) {
-                    shared.index = mesh.sharedMeshes.size();
-                    mesh.sharedMeshes.push_back({firstTriangle, count, {}});
+                const auto triangles = static_cast<uint32_t>(meshData.triangles.size() - firstTriangle);
+                if (triangles > 0) {
+                    shared.index = meshData.sharedMeshes.size();
+                    meshData.sharedMeshes.push_back({firstTriangle, triangles, {}});
                 }
             } else {
                 dropped_ += shared.degenerate;  // each use leaves out what flattening it would
             }
-            if (shared.index == SIZE_MAX) continue;
-            SharedMesh& sharedMesh = mesh.sharedMeshes[shared.index];
+            if (shared.index == SIZE_MAX) return;
+            SharedMesh& sharedMesh = meshData.sharedMeshes[shared.index];
             // A placement that flattens the primitive makes every triangle degenerate.
-            const glm::mat4 placement(use.world);
+            const glm::mat4 placement(world);
             if (!std::isnormal(glm::determinant(glm::mat3(placement)))) {
                 dropped_ += sharedMesh.triangleCount;
-                continue;
+                return;
             }
             sharedMesh.placements.push_back(placement);
-        }
-    }
-
-    const tinygltf::Primitive& primitiveOf(const PrimitiveUse& use) const {
-        return gltf_.model.meshes[static_cast<size_t>(use.mesh)].primitives[use.primitive];
+        });
     }
 
     // The primitive's triangles appended, at `world`.
@@ -396,7 +404,7 @@ private:
     GltfModel& gltf_;
     SceneTextures& textures_;
     const SceneBudget& budget_;
-    std::vector<PrimitiveUse> uses_;
+    std::vector<MeshNode> meshNodes_;
     ParsedScene parsed_;
     std::optional<uint32_t> defaultMaterial_;
     size_t dropped_ = 0;

@@ -210,14 +210,14 @@ MeshData& laidOut(MeshData& mesh) {
     }
     std::vector<uint32_t> order;
     order.reserve(mesh.triangles.size());
-    // Appends triangles [first, end) that `keep` keeps, the cut-outs last; returns where they begin.
+    // Appends triangles [first, end) that `keep` keeps, the cut-outs last.
     const auto appendRange = [&](uint32_t first, uint32_t end, auto keep) {
         const size_t start = order.size();
         for (uint32_t t = first; t < end; ++t) {
             if (keep(t)) order.push_back(t);
         }
-        return std::stable_partition(order.begin() + static_cast<std::ptrdiff_t>(start), order.end(),
-                                     [&](uint32_t t) { return !isCutout(mesh, t); });
+        std::stable_partition(order.begin() + static_cast<std::ptrdiff_t>(start), order.end(),
+                              [&](uint32_t t) { return !isCutout(mesh, t); });
     };
     size_t k = 0;
     const auto inWorld = [&](uint32_t t) {
