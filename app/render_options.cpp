@@ -52,7 +52,7 @@ void RenderOptions::addTo(CLI::App& command) {
                      "scene's rounding gap share needs it)");
     command.add_option("--max-triangles", maxTriangles,
                        "Refuse a scene that stores more triangles than this after instancing (a shared "
-                       "mesh's once, each instance counted as one more), before reading its geometry")
+                       "mesh's once, each instance counted as 3), before reading its geometry")
         ->capture_default_str();
 }
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "materials/normal_map.h"
 #include "util/error.h"
@@ -55,15 +57,6 @@ RTCDevice embreeDevice() {
 }
 
 namespace {
-bool isFinite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            if (!std::isfinite(m[c][r])) return false;
-        }
-    }
-    return true;
-}
-
 // Ranges in order and apart, vertices of their own, placements affine and invertible (mesh.h).
 void validateSharedMeshes(const MeshData& mesh) {
     const auto& shared = mesh.sharedMeshes;
@@ -77,7 +70,10 @@ void validateSharedMeshes(const MeshData& mesh) {
         for (const glm::mat4& placement : s.placements) {
             const bool affine = placement[0][3] == 0.0f && placement[1][3] == 0.0f && placement[2][3] == 0.0f &&
                                 placement[3][3] == 1.0f;
-            if (!isFinite(placement) || !affine || !std::isnormal(glm::determinant(glm::mat3(placement)))) {
+            const glm::vec3 translation(placement[3]);
+            const bool finite = !glm::any(glm::isnan(translation)) && !glm::any(glm::isinf(translation));
+            // A non-finite linear part has no normal determinant either.
+            if (!affine || !finite || !std::isnormal(glm::determinant(glm::mat3(placement)))) {
                 throw Error("a shared mesh's placement is not a finite, invertible affine transform");
             }
         }

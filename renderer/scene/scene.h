@@ -125,6 +125,9 @@ public:
     }
     const MaterialTable& materials() const { return materials_; }
     const SceneLights& lights() const { return lights_; }
+    // The mesh as laid out (the constructor's order). With shared meshes, their triangles' vertices
+    // are in their own coordinates, and the emitting triangles placed into the world leave their
+    // originals' vertices unused.
     const MeshData& mesh() const { return mesh_; }
     const SceneSummary& summary() const { return summary_; }
     // World bounding box of all vertices (mesh.h's worldBounds).

@@ -92,11 +92,15 @@ std::string counted(uint64_t n, const std::string& thing) {
 }  // namespace
 
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget) {
-    if (count.stored <= budget.triangles && count.placements <= budget.triangles - count.stored) return;
+    if (count.stored <= budget.triangles &&
+        count.placements <= (budget.triangles - count.stored) / kTrianglesPerInstance) {
+        return;
+    }
     std::string message = path + ": " + counted(count.stored, "triangle") + " after instancing";
     if (count.placements > 0) {
-        message += " and " + counted(count.placements, "instance") + " (counted as a triangle each; " +
-                   counted(count.placed, "triangle") + " placed)";
+        message += " and " + counted(count.placements, "instance") + " (counted as " +
+                   std::to_string(kTrianglesPerInstance) + " triangles each; " + counted(count.placed, "triangle") +
+                   " placed)";
     }
     throw Error(message + " exceed the budget of " + counted(budget.triangles, "triangle") +
                 " (--max-triangles N raises it)");

@@ -27,14 +27,17 @@ struct LoadReport {
 };
 
 // What a scene may cost, checked while it is parsed, before its geometry is read into memory: the
-// triangles it stores after instancing, each shared mesh's once (mesh.h), plus one for each
-// placement of a shared mesh. Memory follows that count, not the triangles placed in the world:
-// a placement is an Embree instance, a few hundred bytes, however large its mesh (measured: the
-// memory figures of the README's instancing section), while a stored triangle costs its vertices,
-// indices, normals and BVH share. The default is what a desktop survives.
+// triangles it stores after instancing, each shared mesh's once (mesh.h), plus
+// kTrianglesPerInstance for each placement of a shared mesh. Memory follows that count, not the
+// triangles placed in the world: a stored triangle costs its vertices, indices, normals and BVH
+// share, about 175 bytes (peak RSS of 10^7 flattened grid triangles: 1.75 GB), and a placement an
+// Embree instance and its record, about 570 bytes however large its mesh (10^3 to 10^4 instances
+// of one 10^4-triangle grid: 17.0 to 22.1 MB; scripts/make_instancing_case.py). The default is
+// what a desktop survives: some 9 GB.
 struct SceneBudget {
     uint64_t triangles = 50'000'000;
 };
+inline constexpr uint64_t kTrianglesPerInstance = 3;
 
 // A scene's triangles as the budget counts them (stored and placements) and as its world has
 // them (placed, which only the message reports).
@@ -45,7 +48,7 @@ struct TriangleCount {
 };
 
 // Throws strata::Error "PATH: N triangles after instancing (...) exceed the budget of B
-// (--max-triangles raises it)" when stored + placements is over the budget.
+// triangles (--max-triangles N raises it)" when stored + 3 placements is over the budget.
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget);
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose

@@ -173,9 +173,9 @@ const std::vector<BadInputCase> kCliCases = {
      "s.obj: 2 triangles after instancing exceed the budget of 1 triangle (--max-triangles N raises it)"},
     {"scene over the triangle budget (glTF, one primitive placed by three nodes)",
      {{"s.gltf", gltfPlacedThrice()}},
-     "render {dir}/s.gltf --max-triangles 3",
-     "s.gltf: 1 triangle after instancing and 3 instances (counted as a triangle each; 3 triangles placed) "
-     "exceed the budget of 3 triangles (--max-triangles N raises it)"},
+     "render {dir}/s.gltf --max-triangles 9",
+     "s.gltf: 1 triangle after instancing and 3 instances (counted as 3 triangles each; 3 triangles placed) "
+     "exceed the budget of 9 triangles (--max-triangles N raises it)"},
     {"render --height negative", {}, "render {dir}/s.obj --height -4", "--height: must be in 1..65536"},
     {"render --tonemap unknown", {}, "render {dir}/s.obj --tonemap filmic", "--tonemap: unknown tonemap 'filmic'"},
     {"render --out unknown format", {}, "render {dir}/s.obj --out {dir}/image.bmp",
