@@ -29,8 +29,8 @@ struct ConvergenceSettings {
     int threads = 0;
     std::filesystem::path outDir;
     // Also run strata24 with each of the renderer's skips (docs/design.md, "Skip what a scene
-    // does not need") switched the other way: Russian roulette off, adaptive sampling on. skipsSummary
-    // compares each with the plain strata24 run (the programs' defaults).
+    // does not need") switched the other way: Russian roulette off, adaptive sampling on.
+    // skipsSummary compares each with the plain strata24 run (the programs' defaults).
     bool skips = false;
 };
 
