@@ -110,6 +110,7 @@ public:
     ParsedScene build() {
         for (size_t i = 0; i < gltf_.model.materials.size(); ++i) {
             parsed_.mesh.materials.push_back(gltfMaterial(gltf_, textures_, i));
+            uvTransforms_.push_back(gltfTextureTransform(gltf_, i));
         }
         visitNodes();
         addPrimitives();
@@ -358,7 +359,8 @@ private:
         }
         const auto firstUv = static_cast<uint32_t>(mesh.uvs.size());
         for (size_t v = 0; v < texCoords.size() / 2; ++v) {
-            mesh.uvs.emplace_back(static_cast<float>(texCoords[2 * v]), static_cast<float>(1.0 - texCoords[2 * v + 1]));
+            const glm::dvec3 uv = uvTransform * glm::dvec3(texCoords[2 * v], texCoords[2 * v + 1], 1.0);
+            mesh.uvs.emplace_back(static_cast<float>(uv.x), static_cast<float>(1.0 - uv.y));
         }
         for (size_t c = 0; c < corners.size(); c += 3) {
             std::array<uint32_t, 3> corner{corners[c], corners[c + 1], corners[c + 2]};
@@ -393,6 +395,9 @@ private:
         if (index >= 0) {
             element(gltf_.model.materials, index, "material");
             return static_cast<uint32_t>(index);
+        // The material's KHR_texture_transform, in glTF's UV coordinates (gltf_materials.h).
+        const glm::dmat3 uvTransform =
+            primitive.material >= 0 ? uvTransforms_[static_cast<size_t>(primitive.material)] : glm::dmat3(1.0);
         }
         if (!defaultMaterial_) {
             defaultMaterial_ = static_cast<uint32_t>(parsed_.mesh.materials.size());
@@ -420,3 +425,4 @@ ParsedScene buildGltfScene(GltfModel& gltf, SceneTextures& textures, const Scene
 }
 
 }  // namespace strata
+    std::vector<glm::dmat3> uvTransforms_;  // by material
