@@ -407,11 +407,12 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
           "mem/model.gltf: requires extension KHR_materials_volume, which Strata does not implement");
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
-    CHECK(errorOf(lines.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: mode 1 (lines) is not a surface; "
-                                   "Strata renders triangles, strips and fans");
+    CHECK(errorOf(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
+                                   "triangles, strips and fans");
     Model outOfRange = model;
     outOfRange.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
-    CHECK(errorOf(outOfRange.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: index 7 out of range (3 vertices)");
+    CHECK(errorOf(outOfRange.gltf()) ==
+          "mem/model.gltf: every triangle uses an index past its primitive's vertices; nothing is left");
     Model shortView = model;
     shortView.doc["accessors"][0]["count"] = 4;
     shortView.meshNode({{"attributes", {{"POSITION", positions}}}});
@@ -465,8 +466,9 @@ TEST_CASE("gltf: assimp's glTF 2.0 test models load or fail with one line naming
         return std::string("(loaded)");
     };
     const auto path = [&](const std::string& file) { return (root / file).string(); };
-    CHECK(errorOfFile("IndexOutOfRange/IndexOutOfRange.gltf") ==
-          path("IndexOutOfRange/IndexOutOfRange.gltf") + ": mesh 'Mesh' (0) primitive 0: index 255 out of range (24 vertices)");
+    CHECK(errorOfFile("IndexOutOfRange/AllIndicesOutOfRange.gltf") ==
+          path("IndexOutOfRange/AllIndicesOutOfRange.gltf") +
+              ": every triangle uses an index past its primitive's vertices; nothing is left");
     CHECK(errorOfFile("MissingBin/BoxTextured.gltf") == path("MissingBin/BoxTextured.gltf") + ": File not found : BoxTextured0.bin");
     CHECK(errorOfFile("RecursiveNodes/RecursiveNodes.gltf") ==
           path("RecursiveNodes/RecursiveNodes.gltf") + ": node 0 is reached twice: the node hierarchy is not a tree");
