@@ -92,8 +92,8 @@ const std::vector<BadInputCase> kCliCases = {
      "s.obj: the scene has no usable triangles"},
     {"OBJ binary garbage", {{"s.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0v\xff\xfe f \x80", 17)}},
      "render {dir}/s.obj", "s.obj: the scene has no usable triangles"},
-    {"OBJ in UTF-16", {{"s.obj", std::string("\xff\xfev\0 \0", 6)}}, "render {dir}/s.obj",
-     "s.obj: the file is UTF-16 text; save it as UTF-8 or ASCII"},
+    {"OBJ in UTF-16 of an odd length", {{"s.obj", std::string("\xff\xfev\0 ", 5)}}, "render {dir}/s.obj",
+     "s.obj: UTF-16 text of an odd number of bytes"},
     // glTF
     {"glTF malformed JSON", {{"s.gltf", R"({"asset": {"version": "2.0"},)"}}, "render {dir}/s.gltf",
      "s.gltf: [json.exception.parse_error.101] parse error at line 1"},
