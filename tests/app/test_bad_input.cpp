@@ -64,7 +64,7 @@ const std::vector<BadInputCase> kCliCases = {
      "absent.fbx: no such scene file"},
     // OBJ
     {"OBJ file missing", {}, "render {dir}/absent.obj", "absent.obj: no such scene file"},
-    {"OBJ path is a directory", {}, "render {dir}", "no such scene file"},
+    {"OBJ path is a directory", {}, "render {dir}", "is a folder, not a scene file (give one of its .obj, .gltf, .glb files)"},
     {"OBJ malformed number", {{"s.obj", "mtllib s.mtl\nv 0 0 0\nv 1 x 0\n"}}, "render {dir}/s.obj",
      "s.obj:3: 'x' is not a number"},
     {"OBJ vertex with 2 coordinates", {{"s.obj", "v 0 0\n"}}, "render {dir}/s.obj",
