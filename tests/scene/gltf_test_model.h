@@ -9,7 +9,9 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_loader.h"
 #include "scene/scene_format.h"
+#include "util/error.h"
 
 namespace strata::test {
 
@@ -97,6 +99,16 @@ struct Model {
 
 inline SceneBundle bundleOf(const std::string& bytes, const std::string& name = "model.gltf") {
     return SceneBundle{"mem/" + name, {{name, bytes}}, std::nullopt, std::nullopt};
+}
+
+// The one line that parsing `model` as a .gltf throws, or "(loaded)".
+inline std::string errorOf(const Model& model) {
+    try {
+        parseGltfScene(bundleOf(model.gltf()));
+    } catch (const Error& error) {
+        return error.what();
+    }
+    return "(loaded)";
 }
 
 }  // namespace strata::test

@@ -22,6 +22,7 @@
 
 using namespace strata;
 using nlohmann::json;
+using test::errorOf;
 
 namespace {
 
@@ -75,14 +76,6 @@ test::Model dracoModel(const Encoded& encoded) {
     return model;
 }
 
-std::string errorOf(const test::Model& model) {
-    try {
-        parseGltfScene(test::bundleOf(model.gltf()));
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(loaded)";
-}
 
 // A triangle's corners in a canonical order (the decoder may renumber the points and start a
 // triangle at another corner, but keeps its winding).

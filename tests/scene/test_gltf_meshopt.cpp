@@ -16,6 +16,7 @@
 
 using namespace strata;
 using nlohmann::json;
+using test::errorOf;
 
 namespace {
 
@@ -105,14 +106,6 @@ MeshoptModel quadModel() {
     return model;
 }
 
-std::string errorOf(const test::Model& model) {
-    try {
-        parseGltfScene(test::bundleOf(model.gltf()));
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(loaded)";
-}
 
 }  // namespace
 

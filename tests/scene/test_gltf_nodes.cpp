@@ -15,6 +15,7 @@
 
 using namespace strata;
 using nlohmann::json;
+using test::errorOf;
 
 namespace {
 
@@ -24,14 +25,6 @@ bool warned(const LoadReport& report, const std::string& line) {
     return std::count(report.warnings.begin(), report.warnings.end(), "mem/model.gltf: " + line) == 1;
 }
 
-std::string errorOf(const test::Model& model) {
-    try {
-        parseGltfScene(test::bundleOf(model.gltf()));
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(loaded)";
-}
 
 }  // namespace
 
