@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "strata: unknown command '%s' (see --help)\n", argv[1]);
             return 2;
         }
-        if (const auto message = strata::unknownOptionMessage(*command, std::vector<std::string>(argv + 2, argv + argc))) {
+        const std::vector<std::string> arguments(argv + 2, argv + argc);
+        if (const auto message = strata::unknownOptionMessage(*command, arguments)) {
             std::fprintf(stderr, "strata: %s: %s (see strata %s --help)\n", argv[1], message->c_str(), argv[1]);
             return 2;
         }

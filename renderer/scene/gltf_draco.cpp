@@ -89,8 +89,9 @@ public:
             if (!id.IsInt() || id.GetNumberAsInt() < 0 || it == primitive_.attributes.end()) {
                 fail("attribute " + name + " needs a Draco id and an accessor of the primitive");
             }
-            const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(static_cast<uint32_t>(id.GetNumberAsInt()));
-            if (!attribute) fail("attribute " + name + ": the Draco data has no attribute " + std::to_string(id.GetNumberAsInt()));
+            const auto unique = static_cast<uint32_t>(id.GetNumberAsInt());
+            const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(unique);
+            if (!attribute) fail("attribute " + name + ": the Draco data has no attribute " + std::to_string(unique));
             tinygltf::Accessor& target = accessor(it->second, name);
             const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(target.type));
             std::vector<unsigned char> bytes;
@@ -131,7 +132,9 @@ private:
         buffer.Init(reinterpret_cast<const char*>(data.data() + view.byteOffset), view.byteLength);
         draco::Decoder decoder;
         auto result = decoder.DecodeMeshFromBuffer(&buffer);
-        if (!result.ok() || !result.value()) fail("the data does not decode (" + result.status().error_msg_string() + ")");
+        if (!result.ok() || !result.value()) {
+            fail("the data does not decode (" + result.status().error_msg_string() + ")");
+        }
         return std::move(result).value();
     }
 

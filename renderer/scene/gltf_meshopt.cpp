@@ -41,7 +41,8 @@ public:
         const size_t stride = number("byteStride");
         const size_t count = number("count");
         if (stride == 0 || count > std::numeric_limits<uint32_t>::max() / stride) {
-            fail("byteStride " + std::to_string(stride) + " x count " + std::to_string(count) + " is not a buffer size");
+            fail("byteStride " + std::to_string(stride) + " x count " + std::to_string(count) +
+                 " is not a buffer size");
         }
         const std::string mode = text("mode");
         const std::string filter = text("filter", "NONE");

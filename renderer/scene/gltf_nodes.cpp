@@ -131,7 +131,8 @@ private:
         if (outOfRange_ > 0) fail("every triangle uses an index past its primitive's vertices; nothing is left");
         if (hasPoints_ || hasLines_) {
             const char* kinds = hasPoints_ && hasLines_ ? "points and lines" : hasPoints_ ? "points" : "lines";
-            fail(std::string("the file holds only ") + kinds + ", no surfaces; Strata renders triangles, strips and fans");
+            fail(std::string("the file holds only ") + kinds +
+                 ", no surfaces; Strata renders triangles, strips and fans");
         }
     }
 
@@ -360,7 +361,8 @@ private:
         std::vector<uint32_t> vertices;
         if (primitive.indices >= 0) {
             for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
-                vertices.push_back(index < static_cast<double>(vertexCount) ? static_cast<uint32_t>(index) : kOutOfRange);
+                const bool inRange = index < static_cast<double>(vertexCount);
+                vertices.push_back(inRange ? static_cast<uint32_t>(index) : kOutOfRange);
             }
         } else {
             for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
