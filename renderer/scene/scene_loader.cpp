@@ -75,7 +75,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal,
+                       const std::function<void(ParseStage)>& onStage) {
+    if (onStage) onStage(ParseStage::Parsing);
     LoadReport report;
     ParsedScene parsed = parseSceneFile(bundle, &report);
     MeshData& mesh = parsed.mesh;
@@ -99,6 +101,7 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
+    if (onStage) onStage(ParseStage::Building);
     Scene scene(std::move(mesh), traversal);
     if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
     return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
