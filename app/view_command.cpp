@@ -82,10 +82,11 @@ void ViewCommand::run() const {
     run.height = window.at(1);
     run.frames = frames;
     if (!screenshot.empty()) run.screenshot = screenshot;
-    // The image size follows the window; --width/--height set the window when given.
+    // The image has the window less the panel beside it; --width/--height set the image instead,
+    // and the window is made that much wider than it.
     if (render.width) {
         if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
-        run.width = *render.width;
+        run.width = *render.width + static_cast<int>(viewer::kPanelWidth);
     }
     if (render.height) {
         if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
@@ -112,8 +113,10 @@ void ViewCommand::run() const {
     const nlohmann::json out{
         {"scene", scene->scenePath().string()},
         {"context", report.context},
-        {"width", run.width},
+        {"width", run.width},  // the window's
         {"height", run.height},
+        {"image_width", last && !last->sides.empty() ? last->sides[0].image.width : 0},
+        {"image_height", last && !last->sides.empty() ? last->sides[0].image.height : 0},
         {"frames", report.frameSeconds.size()},
         {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
         {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
@@ -144,7 +147,10 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
     sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
-    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_option("--window", command->window,
+                    "Window size W H; the image has it less the panel (--width/--height set the image)")
+        ->expected(2)
+        ->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
