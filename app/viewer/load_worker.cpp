@@ -2,6 +2,10 @@
 
 #include <exception>
 #include <utility>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "render_worker.h"
 
 namespace strata::viewer {
 
@@ -86,6 +90,8 @@ void LoadWorker::enter(const char* stage) {
 }
 
 void LoadWorker::run() {
+    // Nice values are per thread on Linux; best effort.
+    setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kWorkerNiceness);
     for (;;) {
         LoadRequest request;
         {

@@ -19,8 +19,6 @@ using Clock = std::chrono::steady_clock;
 // 50-64 ms.
 constexpr double kBandSeconds = 0.25;
 constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands waste its threads
-// Nice value of the render threads: the UI thread stays responsive with every core rendering.
-constexpr int kRenderNiceness = 5;
 // Bands of a job's first step, whose cost is not known yet: its first image comes sooner.
 constexpr int kFirstStepBands = 4;
 // Steps one at a time cost throughput: a snapshot for every step (built here, uploaded and drawn
@@ -72,7 +70,7 @@ RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side
     settings.seed = config.seed;
     settings.threads = config.threads;
     // Render threads yield to the UI thread (and llvmpipe's) on a small machine.
-    settings.niceness = kRenderNiceness;
+    settings.niceness = kWorkerNiceness;
     // The preview's single path per pixel is no estimate to judge pixels by.
     settings.adaptive.threshold = config.preview ? 0.0 : config.noiseThreshold;
     return settings;

@@ -376,13 +376,20 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         ImGui::PopStyleVar();
         if (ImGui::ArrowButton("unfold", ImGuiDir_Right)) folded_ = false;
         remember("unfold panel", false);
-        ImGui::End();
-        return actions;
+    } else {
+        ImGui::Begin("Strata", nullptr, kSidePanel);
+        if (ImGui::ArrowButton("fold", ImGuiDir_Left)) folded_ = true;
+        remember("fold panel", false);
+        ImGui::SameLine();
+        contents(settings, snapshot, scene, loading, actions);
     }
-    ImGui::Begin("Strata", nullptr, kSidePanel);
-    if (ImGui::ArrowButton("fold", ImGuiDir_Left)) folded_ = true;
-    remember("fold panel", false);
-    ImGui::SameLine();
+    ImGui::End();
+    if (const auto path = dialog_.draw(controls_)) chosen(path->string(), actions);
+    return actions;
+}
+
+void ViewerPanel::contents(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene,
+                           const std::optional<LoadProgress>& loading, PanelActions& actions) {
     ImGui::PushItemWidth(190.0f);
     statusLines(snapshot, scene, loading, actions);
 
@@ -426,9 +433,6 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         ImGui::TextWrapped("%s", message_.c_str());
     }
     ImGui::PopItemWidth();
-    ImGui::End();
-    if (const auto path = dialog_.draw(controls_)) chosen(path->string(), actions);
-    return actions;
 }
 
 void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {

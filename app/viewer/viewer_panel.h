@@ -128,6 +128,9 @@ private:
     enum class Browsing { Scene, EnvironmentMap, Reference };
 
     void remember(const std::string& name, bool labelled = true) { controls_.remember(name, labelled); }
+    // The unfolded panel's contents, top to bottom.
+    void contents(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene,
+                  const std::optional<LoadProgress>& loading, PanelActions& actions);
     bool sideControls(const char* label, SideConfig& side, bool depthLocked);
     // The epsilon control: sets every side's depth to K_eps and says what it chose, or why not.
     void truncationControls(ViewerSettings& settings, const Scene& scene);
