@@ -7,6 +7,7 @@
 #include <cmath>
 #include <imgui.h>
 
+#include "app/viewer/headless_imgui.h"
 #include "error_plot.h"
 
 using namespace strata;
@@ -14,24 +15,11 @@ using namespace strata::viewer;
 
 namespace {
 
-// An ImGui context with its default font built, inside a frame: CalcTextSize measures as the
-// panel does. No renderer: nothing is drawn.
+// Inside a frame, as the panel measures its labels; nothing is drawn.
 struct ImGuiFrame {
-    ImGuiFrame() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 720);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-        ImGui::NewFrame();
-    }
-    ~ImGuiFrame() {
-        ImGui::EndFrame();
-        ImGui::DestroyContext();
-    }
+    test::HeadlessImGui context{ImVec2(1280, 720)};
+    ImGuiFrame() { ImGui::NewFrame(); }
+    ~ImGuiFrame() { ImGui::EndFrame(); }
 };
 
 bool inside(const PlotLabel& label, ImVec2 origin, ImVec2 size) {
