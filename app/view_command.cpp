@@ -156,7 +156,8 @@ void addViewCommand(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
         ->capture_default_str();
-    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+    sub->add_option("--scale", command->scale,
+                    "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
     sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();

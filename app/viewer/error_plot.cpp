@@ -75,7 +75,9 @@ std::vector<size_t> thinForDrawing(const std::vector<ErrorSample>& samples, Erro
 ErrorPlotLayout layoutErrorPlot(ImVec2 origin, ImVec2 size, DecadeRange x, DecadeRange y) {
     const float lineHeight = ImGui::GetTextLineHeight();
     float yLabelWidth = 0.0f;
-    for (int k = y.min; k <= y.max; ++k) yLabelWidth = std::max(yLabelWidth, ImGui::CalcTextSize(decadeLabel(k).c_str()).x);
+    for (int k = y.min; k <= y.max; ++k) {
+        yLabelWidth = std::max(yLabelWidth, ImGui::CalcTextSize(decadeLabel(k).c_str()).x);
+    }
     ErrorPlotLayout layout;
     // Room for the widest y label on the left, half a line above the top one (centred on its
     // tick) and a line under the frame for the x labels.
@@ -89,9 +91,10 @@ ErrorPlotLayout layoutErrorPlot(ImVec2 origin, ImVec2 size, DecadeRange x, Decad
     for (int k = x.min; k <= x.max; ++k) {
         const std::string text = decadeLabel(k);
         const float width = ImGui::CalcTextSize(text.c_str()).x;
-        const float tick = layout.frameMin.x + static_cast<float>(k - x.min) / static_cast<float>(x.max - x.min) *
-                                                   (layout.frameMax.x - layout.frameMin.x);
-        const float left = std::clamp(tick - 0.5f * width, layout.frameMin.x, std::max(layout.frameMin.x, right - width));
+        const float along = static_cast<float>(k - x.min) / static_cast<float>(x.max - x.min);
+        const float tick = layout.frameMin.x + along * (layout.frameMax.x - layout.frameMin.x);
+        const float left =
+            std::clamp(tick - 0.5f * width, layout.frameMin.x, std::max(layout.frameMin.x, right - width));
         if (left < lastRight + kPad) continue;
         const float top = layout.frameMax.y + kPad;
         layout.xLabels.push_back({text, ImVec2(left, top), ImVec2(left + width, top + lineHeight)});
@@ -103,12 +106,14 @@ ErrorPlotLayout layoutErrorPlot(ImVec2 origin, ImVec2 size, DecadeRange x, Decad
     for (int k = y.min; k <= y.max; ++k) {
         const std::string text = decadeLabel(k);
         const float width = ImGui::CalcTextSize(text.c_str()).x;
-        const float tick = layout.frameMax.y - static_cast<float>(k - y.min) / static_cast<float>(y.max - y.min) *
-                                                   (layout.frameMax.y - layout.frameMin.y);
-        const float top = std::clamp(tick - 0.5f * lineHeight, origin.y, std::max(origin.y, bottom - lineHeight));
+        const float along = static_cast<float>(k - y.min) / static_cast<float>(y.max - y.min);
+        const float tick = layout.frameMax.y - along * (layout.frameMax.y - layout.frameMin.y);
+        const float top =
+            std::clamp(tick - 0.5f * lineHeight, origin.y, std::max(origin.y, bottom - lineHeight));
         if (top + lineHeight > lastTop) continue;
         const float labelRight = layout.frameMin.x - kPad;
-        layout.yLabels.push_back({text, ImVec2(labelRight - width, top), ImVec2(labelRight, top + lineHeight)});
+        layout.yLabels.push_back(
+            {text, ImVec2(labelRight - width, top), ImVec2(labelRight, top + lineHeight)});
         lastTop = top;
     }
     return layout;
@@ -138,8 +143,9 @@ void drawErrorPlot(const char* id, ErrorAxis axis, const std::vector<ErrorSeries
     const ErrorPlotLayout layout = layoutErrorPlot(origin, size, xDecades, yDecades);
     const ImVec2 lo = layout.frameMin, hi = layout.frameMax;
     const auto toScreen = [&](double lx, double ly) {
-        return ImVec2(lo.x + static_cast<float>((lx - xDecades.min) / (xDecades.max - xDecades.min)) * (hi.x - lo.x),
-                      hi.y - static_cast<float>((ly - yDecades.min) / (yDecades.max - yDecades.min)) * (hi.y - lo.y));
+        return ImVec2(
+            lo.x + static_cast<float>((lx - xDecades.min) / (xDecades.max - xDecades.min)) * (hi.x - lo.x),
+            hi.y - static_cast<float>((ly - yDecades.min) / (yDecades.max - yDecades.min)) * (hi.y - lo.y));
     };
     const ImU32 grid = IM_COL32(70, 70, 80, 255);
     for (int k = xDecades.min; k <= xDecades.max; ++k) {
@@ -170,7 +176,8 @@ void drawErrorPlot(const char* id, ErrorAxis axis, const std::vector<ErrorSeries
         if (points.size() <= kMarkedPoints) {
             for (const auto& p : points) draw->AddCircleFilled(p, 2.0f, s.colour);
         }
-        draw->AddText(ImVec2(hi.x - ImGui::CalcTextSize(s.label.c_str()).x - kPad, legendY), s.colour, s.label.c_str());
+        draw->AddText(ImVec2(hi.x - ImGui::CalcTextSize(s.label.c_str()).x - kPad, legendY), s.colour,
+                      s.label.c_str());
         legendY += lineHeight;
     }
 }

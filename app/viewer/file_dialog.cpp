@@ -50,7 +50,8 @@ std::vector<FolderEntry> listFolder(const std::filesystem::path& folder,
     return folders;
 }
 
-void FileDialog::open(std::string title, const std::filesystem::path& start, std::vector<std::string> extensions) {
+void FileDialog::open(std::string title, const std::filesystem::path& start,
+                      std::vector<std::string> extensions) {
     title_ = std::move(title);
     extensions_ = std::move(extensions);
     const std::filesystem::path folder = startingFolder(start);
@@ -105,7 +106,8 @@ std::optional<std::filesystem::path> FileDialog::draw(ControlRects& controls) {
         opening_ = false;
     }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, display.x - 16.0f), std::min(440.0f, display.y - 16.0f)),
                              ImGuiCond_Appearing);
     bool keepOpen = true;
@@ -122,8 +124,8 @@ std::optional<std::filesystem::path> FileDialog::draw(ControlRects& controls) {
     // the folder or chooses the file, which ends the list for this frame. Both clicks must be on
     // this entry: a click on another one just before it is no double click.
     const auto entry = [&](const std::string& name, bool folder) {
-        const bool picked = ImGui::Selectable(folder ? (name + "/").c_str() : name.c_str(), name == field_.data(),
-                                              ImGuiSelectableFlags_AllowDoubleClick);
+        const bool picked = ImGui::Selectable(folder ? (name + "/").c_str() : name.c_str(),
+                                              name == field_.data(), ImGuiSelectableFlags_AllowDoubleClick);
         controls.remember("dialog/" + name, false);
         if (!picked) return false;
         const bool selectedBefore = name == field_.data();
@@ -135,17 +137,21 @@ std::optional<std::filesystem::path> FileDialog::draw(ControlRects& controls) {
     bool changed = folder_.has_relative_path() && entry("..", true);
     // A copy: entering a folder replaces the list being drawn.
     const std::vector<FolderEntry> entries = entries_;
-    for (size_t i = 0; i < entries.size() && !changed; ++i) changed = entry(entries[i].name, entries[i].folder);
+    for (size_t i = 0; i < entries.size() && !changed; ++i) {
+        changed = entry(entries[i].name, entries[i].folder);
+    }
     if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", error_.c_str());
     ImGui::EndChild();
 
     ImGui::SetNextItemWidth(-1.0f);
-    const bool entered = ImGui::InputText("##path", field_.data(), field_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered =
+        ImGui::InputText("##path", field_.data(), field_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
     controls.remember("dialog path", false);
     const bool openPressed = ImGui::Button("Open");
     controls.remember("dialog open", false);
     ImGui::SameLine();
-    const bool cancelled = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    const bool cancelled =
+        ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
     controls.remember("dialog cancel", false);
     if ((entered || openPressed) && field_[0] != '\0') chosen = accept(typedPath());
     if (cancelled || !keepOpen) open_ = false;

@@ -79,7 +79,8 @@ void Viewer::finishLoad(LoadOutcome outcome) {
     const bool scene = outcome.request.kind == LoadRequest::Kind::Scene;
     const std::string path = outcome.request.path.string();
     if (outcome.cancelled) {
-        panel_.setMessage("cancelled loading " + path + (scene ? "; the open scene stays" : "; the environment stays"));
+        panel_.setMessage("cancelled loading " + path +
+                          (scene ? "; the open scene stays" : "; the environment stays"));
     } else if (!outcome.error.empty()) {
         panel_.setMessage((scene ? "cannot open scene: " : "cannot use environment map: ") + outcome.error);
     } else if (scene) {
@@ -92,7 +93,9 @@ void Viewer::finishLoad(LoadOutcome outcome) {
 void Viewer::showScene(std::shared_ptr<LoadedScene> scene, double seconds) {
     // Here, before the render worker sees the scene: whatever the environment is now, also when
     // it changed while the scene loaded.
-    if (settings_.environment.kind != Environment::Kind::Default) scene->scene.setEnvironment(settings_.environment);
+    if (settings_.environment.kind != Environment::Kind::Default) {
+        scene->scene.setEnvironment(settings_.environment);
+    }
     scene_ = std::move(scene);
     camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
     const std::string path = scene_->scenePath().string();
@@ -244,7 +247,8 @@ void Viewer::updateImage(const DisplaySettings& display) {
 void Viewer::drawOverlays() {
     if (!settings_.split) return;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const float x = static_cast<float>(imageArea_.x) + settings_.display.divider * static_cast<float>(imageArea_.width);
+    const float x =
+        static_cast<float>(imageArea_.x) + settings_.display.divider * static_cast<float>(imageArea_.width);
     const float height = static_cast<float>(imageArea_.height);
     draw->AddLine(ImVec2(x, 0), ImVec2(x, height), IM_COL32(255, 255, 255, 220), 2.0f);
     for (int side = 0; side < 2; ++side) {

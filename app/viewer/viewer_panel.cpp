@@ -225,8 +225,8 @@ void ViewerPanel::loadLine(const std::optional<LoadProgress>& loading, PanelActi
     remember("cancel load", false);
     ImGui::SameLine();
     const std::string name = loading->request.path.filename().string();
-    ImGui::TextColored(ImVec4(0.6f, 0.85f, 1, 1), "%s %s: %s %.1f s",
-                       loading->cancelling ? "cancelling" : "loading", name.c_str(), loading->stage, loading->seconds);
+    ImGui::TextColored(ImVec4(0.6f, 0.85f, 1, 1), "%s %s: %s %.1f s", loading->cancelling ? "cancelling" : "loading",
+                       name.c_str(), loading->stage, loading->seconds);
 }
 
 void ViewerPanel::statusLines(const WorkerSnapshot* snapshot, const Scene& scene,
@@ -368,7 +368,8 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
     ImGui::SetNextWindowBgAlpha(1.0f);  // beside the image, not over it: nothing to show through
     constexpr ImGuiWindowFlags kSidePanel = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
                                             ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
-                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+                                            ImGuiWindowFlags_NoSavedSettings |
+                                            ImGuiWindowFlags_NoBringToFrontOnFocus;
     if (folded_) {
         // Only the strip's button: the window's padding would leave it no room.
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 8));

@@ -87,13 +87,13 @@ TEST_CASE("error plot: every axis label fits inside the plot, beside its frame, 
         for (const PlotLabel& label : layout.xLabels) {
             CAPTURE(label.text);
             CHECK(inside(label, origin, size));
-            CHECK(label.min.y >= layout.frameMax.y);                // under the frame
+            CHECK(label.min.y >= layout.frameMax.y);  // under the frame
             CHECK(label.max.x - label.min.x == doctest::Approx(ImGui::CalcTextSize(label.text.c_str()).x));
         }
         for (const PlotLabel& label : layout.yLabels) {
             CAPTURE(label.text);
             CHECK(inside(label, origin, size));
-            CHECK(label.max.x <= layout.frameMin.x);                // left of the frame
+            CHECK(label.max.x <= layout.frameMin.x);  // left of the frame
             CHECK(label.max.x - label.min.x == doctest::Approx(ImGui::CalcTextSize(label.text.c_str()).x));
         }
         std::vector<PlotLabel> all = layout.xLabels;

@@ -40,11 +40,15 @@ struct StageLog {
     void add(const LoadWorker& loader) {
         const auto progress = loader.progress();
         std::lock_guard lock(mutex);
-        if (progress && (stages.empty() || stages.back() != progress->stage)) stages.emplace_back(progress->stage);
+        if (progress && (stages.empty() || stages.back() != progress->stage)) {
+            stages.emplace_back(progress->stage);
+        }
     }
 };
 
-LoadRequest sceneRequest(const std::filesystem::path& path) { return {LoadRequest::Kind::Scene, path, Traversal::Automatic}; }
+LoadRequest sceneRequest(const std::filesystem::path& path) {
+    return {LoadRequest::Kind::Scene, path, Traversal::Automatic};
+}
 
 const std::filesystem::path kCornell = test::sourceDir() / "assets/cornell/cornell.obj";
 
@@ -125,7 +129,9 @@ TEST_CASE("load worker threads: a failing load is its one line; a map loads as a
     loader.start({LoadRequest::Kind::EnvironmentMap, dir / "square.exr", Traversal::Automatic});
     const LoadOutcome square = outcomeOf(loader);
     CHECK(!square.map);
-    CHECK(square.error.rfind((dir / "square.exr").string() + ": an environment map must be a latitude-longitude image", 0) == 0);
+    const std::string notLatLong =
+        (dir / "square.exr").string() + ": an environment map must be a latitude-longitude image";
+    CHECK(square.error.rfind(notLatLong, 0) == 0);
 }
 
 TEST_CASE("load worker threads: going away mid-load cancels it and waits for its stage to end") {
