@@ -123,7 +123,7 @@ LoadOutcome LoadWorker::load(const LoadRequest& request) {
             enter("reading files");
             SceneBundle bundle = readSceneBundle(request.path);
             auto scene = std::make_shared<LoadedScene>(
-                parseScene(std::move(bundle), request.traversal, [&](ParseStage stage) {
+                parseScene(std::move(bundle), request.traversal, request.budget, [&](ParseStage stage) {
                     enter(stage == ParseStage::Parsing ? "parsing" : "building the BVH");
                 }));
             enter("done");  // a cancel during the build drops what it built

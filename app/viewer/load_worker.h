@@ -26,6 +26,7 @@ struct LoadRequest {
     Kind kind = Kind::Scene;
     std::filesystem::path path;
     Traversal traversal = Traversal::Automatic;  // a scene's triangle test
+    SceneBudget budget;                          // the triangles a scene may store
 };
 
 // The load in flight, for the panel's progress line.

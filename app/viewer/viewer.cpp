@@ -57,7 +57,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
         openEnvironmentMap(path);
         return;
     }
-    sceneLoader_.start({LoadRequest::Kind::Scene, path, settings_.traversal});
+    sceneLoader_.start({LoadRequest::Kind::Scene, path, settings_.traversal, settings_.budget});
 }
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {

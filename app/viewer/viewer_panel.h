@@ -23,6 +23,7 @@
 #include "file_dialog.h"
 #include "lights/environment.h"
 #include "load_worker.h"
+#include "scene/scene_format.h"
 #include "scene/traversal_precision.h"
 #include "render_worker.h"
 
@@ -54,6 +55,8 @@ struct ViewerSettings {
     Environment environment;
     // The triangle test of every scene opened (--watertight: always the watertight one).
     Traversal traversal = Traversal::Automatic;
+    // The triangle budget of every scene opened (--max-triangles).
+    SceneBudget budget;
 
     // The sides the worker renders in the current mode.
     std::vector<SideConfig> sides() const;

@@ -37,10 +37,12 @@ enum class ParseStage { Parsing, Building };
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
 // own (glTF), else framing the scene; `traversal` picks Embree's triangle test
-// (traversal_precision.h). `onStage`, when given, is called as each stage begins; an exception
-// it throws ends the parse there (how the viewer cancels a load between stages).
-// Throws strata::Error naming the bad file.
+// (traversal_precision.h). Throws strata::Error naming the bad file, or the budget the scene
+// exceeds (scene_format.h), before its geometry is read. `onStage`, when given, is called as each
+// stage begins; an exception it throws ends the parse there (how the viewer cancels a load
+// between stages).
 LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic,
+                       const SceneBudget& budget = {},
                        const std::function<void(ParseStage)>& onStage = {});
 
 // readSceneBundle then parseScene.
@@ -49,7 +51,8 @@ LoadedScene loadScene(const std::filesystem::path& path,
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
 // the triangle test and the rounding gap share that chose it, the extent (the bounding box's
-// size, in the scene's units: metres for glTF) and how many warnings loading gave.
+// size, in the scene's units: metres for glTF), the triangles placed by instances when there
+// are any, and how many warnings loading gave.
 std::string describeScene(const LoadedScene& loaded);
 
 // Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.

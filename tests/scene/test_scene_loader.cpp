@@ -198,13 +198,13 @@ TEST_CASE("scene loader: parseScene names its stages as they begin, and one that
     const SceneBundle bundle = readSceneBundle(test::sourceDir() / "assets/cornell/cornell.obj");
     std::vector<ParseStage> stages;
     const LoadedScene loaded =
-        parseScene(bundle, Traversal::Automatic, [&](ParseStage stage) { stages.push_back(stage); });
+        parseScene(bundle, Traversal::Automatic, {}, [&](ParseStage stage) { stages.push_back(stage); });
     CHECK(stages == std::vector<ParseStage>{ParseStage::Parsing, ParseStage::Building});
     CHECK(loaded.scene.summary().triangles == 32);
 
     struct Stop {};
     stages.clear();
-    CHECK_THROWS_AS(parseScene(bundle, Traversal::Automatic,
+    CHECK_THROWS_AS(parseScene(bundle, Traversal::Automatic, {},
                                [&](ParseStage stage) {
                                    stages.push_back(stage);
                                    if (stage == ParseStage::Building) throw Stop{};

@@ -134,6 +134,21 @@ TEST_CASE("load worker threads: a failing load is its one line; a map loads as a
     CHECK(square.error.rfind(notLatLong, 0) == 0);
 }
 
+TEST_CASE("load worker threads: a scene over the request's triangle budget is refused before it is built") {
+    LoadWorker loader;
+    LoadRequest request = sceneRequest(kCornell);
+    request.budget = SceneBudget{31};  // the box has 32
+    loader.start(request);
+    const LoadOutcome refused = outcomeOf(loader);
+    CHECK(!refused.scene);
+    CHECK(refused.error.find("exceed the budget of 31 triangles") != std::string::npos);
+    request.budget = SceneBudget{32};
+    loader.start(request);
+    const LoadOutcome loaded = outcomeOf(loader);
+    REQUIRE(loaded.scene);
+    CHECK(loaded.scene->scene.summary().triangles == 32);
+}
+
 TEST_CASE("load worker threads: going away mid-load cancels it and waits for its stage to end") {
     std::atomic<bool> parsing{false};
     {
