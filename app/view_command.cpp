@@ -57,6 +57,7 @@ void ViewCommand::run() const {
     viewer::ViewerSettings viewerSettings;
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
+    viewerSettings.budget = SceneBudget{render.maxTriangles};
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
@@ -82,10 +83,11 @@ void ViewCommand::run() const {
     run.height = window.at(1);
     run.frames = frames;
     if (!screenshot.empty()) run.screenshot = screenshot;
-    // The image size follows the window; --width/--height set the window when given.
+    // The image has the window less the panel beside it; --width/--height set the image instead,
+    // and the window is made that much wider than it.
     if (render.width) {
         if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
-        run.width = *render.width;
+        run.width = *render.width + static_cast<int>(viewer::kPanelWidth);
     }
     if (render.height) {
         if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
@@ -112,8 +114,10 @@ void ViewCommand::run() const {
     const nlohmann::json out{
         {"scene", scene->scenePath().string()},
         {"context", report.context},
-        {"width", run.width},
+        {"width", run.width},  // the window's
         {"height", run.height},
+        {"image_width", last && !last->sides.empty() ? last->sides[0].image.width : 0},
+        {"image_height", last && !last->sides.empty() ? last->sides[0].image.height : 0},
         {"frames", report.frameSeconds.size()},
         {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
         {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
@@ -144,13 +148,17 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
     sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
-    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_option("--window", command->window,
+                    "Window size W H; the image has it less the panel (--width/--height set the image)")
+        ->expected(2)
+        ->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
         ->capture_default_str();
-    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+    sub->add_option("--scale", command->scale,
+                    "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
     sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();

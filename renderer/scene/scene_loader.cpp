@@ -79,7 +79,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget,
+                       const std::function<void(ParseStage)>& onStage) {
+    if (onStage) onStage(ParseStage::Parsing);
     LoadReport report;
     ParsedScene parsed = parseSceneFile(bundle, &report, budget);
     MeshData& mesh = parsed.mesh;
@@ -103,6 +105,7 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudge
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
+    if (onStage) onStage(ParseStage::Building);
     Scene scene(std::move(mesh), traversal);
     if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
     return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
