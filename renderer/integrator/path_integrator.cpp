@@ -64,6 +64,7 @@ float rouletteSurvival(const glm::vec3& weight) {
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
     : scene_(scene),
       settings_(settings),
+      warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
@@ -175,7 +176,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // The bounce's random numbers depend on the path, not on the surface: drawn first, their
     // arithmetic overlaps the surface's rather than lengthening the chain from the hit to the
     // next ray (cornell_point, defaults: 5% of the CPU time).
-    const PathSamples::StratumPoint directionU = directionNumbers(settings_.sampler, samples, bounce);
+    const DiffuseSampling diffuseU = diffuseNumbers(settings_.sampler, samples, bounce);
     const glm::vec3 lightU = sampleLights_ ? lightNumbers(samples, bounce) : glm::vec3(0.0f);
 
     // Reflection is two-sided: the hemisphere is on the side the ray came from.
@@ -184,27 +185,33 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // The strata, the BSDF's cosines and wo live in the shading frame.
     const Frame frame = Frame::fromNormal(surface.shadingNormal);
     const glm::vec3 wo = frame.toLocal(-ray.direction);
-    const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
+    const Bsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
     // Light that reaches the camera after this vertex's reflection counts as bounce + 1
     // bounces, which the depth allows here.
     if (sampleLights_) {
         shadow = lightSample(surface, frame, wo, bsdf, lightU);
         if (shadow) shadow->contribution = path.weight * shadow->contribution;
     }
-    const SampledDirection sampled = sampleDirection(settings_.sampler, directionU, samples, bounce, bsdf, wo);
-    const glm::vec3 direction = frame.toWorld(sampled.local);
+    BsdfNumbers numbers{diffuseU};
+    if (bsdf.readsLobeNumbers()) {
+        numbers.lobePoint = samples.bouncePoint(bounce);
+        numbers.lobeChoice = samples.lobeChoice(bounce);
+    }
+    const std::optional<BsdfSample> sampled = bsdf.sample(wo, numbers);
+    if (!sampled) return false;  // the sample is lost: it counts, with weight zero
+    const glm::vec3 direction = frame.toWorld(sampled->wi);
     // A direction above the shading hemisphere but below the surface itself would leave
     // through the back: it counts, with weight zero (the path ends). On a flat surface the
     // two hemispheres are one.
     if (surface.smooth && !(glm::dot(direction, surface.normal) > 0.0f)) return false;
-    path.weight *= sampled.weight;
+    path.weight *= sampled->weight;
     if (isBlack(path.weight)) return false;
     if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
         const float survival = rouletteSurvival(path.weight);
         if (samples.roulette(bounce) >= survival) return false;
         path.weight /= survival;
     }
-    path.previous = PreviousVertex{surface.point, sampled.pdf};
+    path.previous = PreviousVertex{surface.point, sampled->pdf};
     path.ray = Ray{offsetRayOrigin(surface, direction), direction};
     return true;
 }
@@ -235,7 +242,7 @@ glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) c
 }
 
 std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
-    const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const LayeredBsdf& bsdf,
+    const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const Bsdf& bsdf,
     const glm::vec3& u) const {
     const LightChoice choice = scene_.lights().sampler().choose(u.x);
     const Light& light = scene_.lights().light(choice.light);
@@ -256,7 +263,7 @@ std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
     if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (wi.z / choice.probability)};
     const float lightPdf = choice.probability * sample->pdf;
     const float misWeight =
-        powerHeuristic(lightPdf, directionPdf(settings_.sampler, bsdf, wo, wi));
+        powerHeuristic(lightPdf, bsdf.pdf(wo, wi, warp_));
     return ShadowRay{ray, reach, f * sample->radiance * (wi.z * misWeight / lightPdf)};
 }
 

@@ -27,7 +27,7 @@
 
 #include "geometry/frame.h"
 #include "geometry/ray.h"
-#include "materials/layered_bsdf.h"
+#include "materials/bsdf.h"
 #include "sampling/direction_sampler.h"
 #include "sampling/path_samples.h"
 #include "scene/scene.h"
@@ -106,7 +106,7 @@ private:
     // (lightNumbers): its shadow ray and the reflected radiance it brings, MIS-weighted against
     // the direction sampler; nullopt when it brings nothing whatever the shadow ray finds.
     std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                                         const LayeredBsdf& bsdf, const glm::vec3& u) const;
+                                         const Bsdf& bsdf, const glm::vec3& u) const;
 
     // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
     // point when the scene has more than one light, the point alone for a single light with
@@ -118,6 +118,7 @@ private:
 
     const Scene& scene_;
     PathIntegratorSettings settings_;
+    DiffuseWarp warp_;   // the sampler's, for the density of a light sample's direction (MIS)
     bool sampleLights_;  // next-event estimation on and something to sample
     LightNumbers lightNumbers_;
 };

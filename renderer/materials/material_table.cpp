@@ -41,20 +41,20 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
                 }
             }
         }
-        entries_.push_back({LayeredBsdf(m.diffuse, m.specular, lobe), black, textured});
+        entries_.push_back({LayeredBsdf(m.diffuse, m.specular, lobe), lobe, black, textured});
     }
 }
 
-LayeredBsdf MaterialTable::texturedBsdf(const Entry& entry, glm::vec2 uv) const {
+Bsdf MaterialTable::texturedBsdf(const Entry& entry, glm::vec2 uv) const {
     const Material& m = textured_[static_cast<size_t>(entry.textured)];
     const glm::vec3 colour =
         m.textures.colour ? unitClamped(glm::vec3(m.textures.colour->lookup(uv))) : glm::vec3(1.0f);
     if (!m.metallicRoughness) {
         // MTL: map_Kd times Kd; Ks and the roughness stay constant.
-        return LayeredBsdf(m.diffuse * colour, m.specular, entry.bsdf.lobe());
+        return LayeredBsdf(m.diffuse * colour, m.specular, entry.lobe);
     }
     float metallic = m.metallicRoughness->metallic;
-    const SpecularLobe* lobe = entry.bsdf.lobe();
+    const SpecularLobe* lobe = entry.lobe;
     if (m.textures.roughnessMetallic) {
         const glm::vec4 texel = m.textures.roughnessMetallic->lookup(uv);
         metallic *= unitClamped(texel.b);

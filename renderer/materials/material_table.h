@@ -17,6 +17,7 @@
 #include <vector>
 #include <glm/vec2.hpp>
 
+#include "materials/bsdf.h"
 #include "materials/layered_bsdf.h"
 #include "materials/material.h"
 
@@ -31,7 +32,7 @@ public:
     // The BSDF of `material` at a hit with texture coordinates `uv`. A material whose
     // parameters are constant over its surface keeps its BSDF made once, and a hit takes a copy:
     // a few dozen bytes.
-    LayeredBsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f)) const {
+    Bsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f)) const {
         const Entry& entry = entries_[material];
         return entry.textured < 0 ? entry.bsdf : texturedBsdf(entry, uv);
     }
@@ -44,12 +45,13 @@ public:
 
 private:
     struct Entry {
-        LayeredBsdf bsdf;  // at the constants
+        Bsdf bsdf;  // at the constants
+        const SpecularLobe* lobe;  // the specular layer's at the material's roughness, or null
         bool black;
         int32_t textured;  // index in textured_, -1 for a material without reflectance textures
     };
     const SpecularLobe* lobeFor(float roughness);
-    LayeredBsdf texturedBsdf(const Entry& entry, glm::vec2 uv) const;
+    Bsdf texturedBsdf(const Entry& entry, glm::vec2 uv) const;
 
     std::vector<Entry> entries_;
     std::vector<Material> textured_;

@@ -341,7 +341,8 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     CHECK(m.cutOut({0.75f, 0.5f}));
     // The per-hit BSDF: base colour (0.5, 0, 0) at the red texel, metallic 0 x 1 = 0: a dielectric.
     const MaterialTable table(mesh.materials);
-    const LayeredBsdf red = table.bsdf(0, {0.25f, 0.5f});
+    const Bsdf bsdf = table.bsdf(0, {0.25f, 0.5f});
+    const LayeredBsdf& red = *bsdf.as<LayeredBsdf>();
     const glm::vec3 albedo = red.tabulatedAlbedo({0.0f, 0.0f, 1.0f});
     CHECK(albedo.x > albedo.y);
     CHECK(albedo.y == albedo.z);
