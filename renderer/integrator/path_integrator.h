@@ -83,6 +83,7 @@ private:
         Ray ray;           // the ray the path traces next
         glm::vec3 weight;  // product of f_r cos / pdf along the path so far
         PreviousVertex previous;
+        glm::vec3 absorption{0.0f};  // of the volume the ray travels through (0: none)
     };
     // A light sample's shadow ray and what it adds to the path's radiance when nothing blocks it.
     struct ShadowRay {

@@ -17,29 +17,44 @@
 #include <glm/vec3.hpp>
 
 #include "materials/bsdf_sample.h"
+#include "materials/clear_coat.h"
 #include "materials/layered_bsdf.h"
+#include "materials/rough_dielectric.h"
+#include "materials/smooth_conductor.h"
+#include "materials/smooth_dielectric.h"
+#include "materials/thin_dielectric.h"
+#include "materials/transmission_blend.h"
 
 namespace strata {
 
 class Bsdf {
 public:
-    using Model = std::variant<LayeredBsdf>;
+    using Model = std::variant<LayeredBsdf, SmoothConductor, SmoothDielectric, RoughDielectric, ThinDielectric,
+                               Coated<LayeredBsdf>, Coated<SmoothConductor>, TransmissionBlend<SmoothDielectric>,
+                               TransmissionBlend<RoughDielectric>, TransmissionBlend<ThinDielectric>>;
 
 private:
     Model model_;
+    BsdfFlags flags_;  // the model's, worked out once: every bounce asks for them
     template <class F>
-    decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), model_); }
+    decltype(auto) visit(F&& f) const {
+        // The layered model is nearly every hit's: called directly rather than through the table
+        // std::visit dispatches by.
+        if (const auto* layered = std::get_if<LayeredBsdf>(&model_)) return f(*layered);
+        return std::visit(std::forward<F>(f), model_);
+    }
 
 public:
     template <class M>
         requires std::is_constructible_v<Model, M>
-    Bsdf(M model) : model_(std::move(model)) {}  // NOLINT(google-explicit-constructor): a model is a BSDF
+    Bsdf(M model)  // NOLINT(google-explicit-constructor): a model is a BSDF
+        : model_(model), flags_(model.isBlack() ? BsdfFlags{0} : model.flags()) {}
 
     // f(wo, wi), every lobe but the specular (delta) ones.
     glm::vec3 evaluate(const glm::vec3& wo, const glm::vec3& wi,
                        TransportMode mode = TransportMode::Radiance) const {
         return visit([&](const auto& m) -> glm::vec3 {
-            if (mirrored(m, wo)) return m.evaluate(flipped(wo), flipped(wi), mode);
+            if (mirrored(wo)) return m.evaluate(flipped(wo), flipped(wi), mode);
             return m.evaluate(wo, wi, mode);
         });
     }
@@ -48,7 +63,7 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& wo, const BsdfNumbers& numbers,
                                      TransportMode mode = TransportMode::Radiance) const {
         return visit([&](const auto& m) -> std::optional<BsdfSample> {
-            if (mirrored(m, wo)) {
+            if (mirrored(wo)) {
                 auto s = m.sample(flipped(wo), numbers, mode);
                 if (s) s->wi = flipped(s->wi);
                 return s;
@@ -65,15 +80,13 @@ public:
     // lobes that are not specular; 0 where only a specular lobe could have given it.
     float pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp warp = DiffuseWarp::Cosine) const {
         return visit([&](const auto& m) -> float {
-            if (mirrored(m, wo)) return m.pdf(flipped(wo), flipped(wi), warp);
+            if (mirrored(wo)) return m.pdf(flipped(wo), flipped(wi), warp);
             return m.pdf(wo, wi, warp);
         });
     }
 
     // The union of the lobes' flags; 0 for a model that scatters nothing.
-    BsdfFlags flags() const {
-        return visit([](const auto& m) { return m.isBlack() ? BsdfFlags{0} : m.flags(); });
-    }
+    BsdfFlags flags() const { return flags_; }
     bool isBlack() const { return flags() == 0; }
     // Whether some lobe is not a delta, so that a light sample can find light it reflects.
     bool hasNonSpecularLobe() const { return (flags() & (kDiffuse | kGlossy)) != 0; }
@@ -84,10 +97,7 @@ public:
     const M* as() const { return std::get_if<M>(&model_); }
 
 private:
-    template <class M>
-    static bool mirrored(const M& m, const glm::vec3& wo) {
-        return !isTransmission(m.flags()) && wo.z < 0.0f;
-    }
+    bool mirrored(const glm::vec3& wo) const { return !isTransmission(flags_) && wo.z < 0.0f; }
     static glm::vec3 flipped(const glm::vec3& w) { return {w.x, w.y, -w.z}; }
 };
 

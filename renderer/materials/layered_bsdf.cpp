@@ -4,6 +4,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "materials/fresnel.h"
 #include "util/constants.h"
 
 namespace strata {
@@ -36,7 +37,7 @@ glm::vec3 LayeredBsdf::specularAlbedo(float mu) const {
     return specular_ * e.x + (glm::vec3(1.0f) - specular_) * e.y;
 }
 
-glm::vec3 LayeredBsdf::tabulatedAlbedo(const glm::vec3& wo) const {
+glm::vec3 LayeredBsdf::albedo(const glm::vec3& wo) const {
     const glm::vec3 e = specularAlbedo(wo.z);
     return e + diffuse_ * (glm::vec3(1.0f) - e);
 }

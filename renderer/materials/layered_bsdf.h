@@ -67,7 +67,7 @@ public:
 
     // The directional albedo the layering assigns at wo: E_F(mu_o) + Kd (1 - E_F(mu_o)), from the
     // tables (the white-furnace test integrates evaluate() to check it).
-    glm::vec3 tabulatedAlbedo(const glm::vec3& wo) const;
+    glm::vec3 albedo(const glm::vec3& wo) const;
 
 private:
     // The probability that sample() takes the specular lobe at wo: lobeChoice below it does.
