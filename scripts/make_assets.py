@@ -8,7 +8,7 @@ cornell/  The Cornell box from the published Cornell measurements (units: mm): t
           Camera: the published pinhole (35 mm focal length, 25 mm film => fov_y 39.3077 deg).
 cornell-glass/  The same box with the short block replaced by a glass sphere (illum 7, Ni 1.5,
           smooth; vertex normals) resting on the floor, and the tall block a mirror (illum 3,
-          Ks 0.95, Pr 0).
+          Ks 0.95, Pr 0) turned to 45 degrees.
 furnace/  The camera inside a closed icosphere (subdivided icosahedron), every face Kd 0.5 and
           Ke 1 facing inward: the exact answer at depth K is (1 - 0.5^(K+1)) / 0.5.
 glossy/   Three Cook-Torrance spheres (gold metal, red plastic, rough copper) on a glossy dark
@@ -126,7 +126,13 @@ def cornell():
 
 def cornell_glass():
     groups, light = cornell_room()
-    groups.append(("mirror_block", "mirror", block(TALL_BLOCK)))
+    # The tall block's footprint turned to 45 degrees from the camera's axis, so that its two
+    # visible faces mirror the red and the green wall rather than the open front.
+    centre = centroid(TALL_BLOCK)
+    half = math.dist(TALL_BLOCK[0], TALL_BLOCK[1]) / 2
+    mirror_top = [[centre[0] + half * math.sqrt(2) * math.cos(a), 330, centre[2] + half * math.sqrt(2) * math.sin(a)]
+                  for a in (0, math.pi / 2, math.pi, 3 * math.pi / 2)]
+    groups.append(("mirror_block", "mirror", block(mirror_top)))
     groups.append(light)
     path = "assets/cornell-glass/cornell-glass.obj"
     write_obj(path, ["The Cornell box with a glass sphere and a mirror block (mm).",
