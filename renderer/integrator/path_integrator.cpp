@@ -6,6 +6,8 @@
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
+#include "geometry/rounding.h"
+
 namespace strata {
 namespace {
 
@@ -18,9 +20,17 @@ float powerHeuristic(float own, float other) {
     return a > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// A shadow ray toward a point on an emitter must stop short of the emitter's own surface: the
-// segment is shortened by this fraction of its length (relative, so independent of scene scale).
+// A shadow ray toward a point on an emitter ends short of the emitter's surface: its end is moved
+// off the surface by the sampled point's rounding error bound (rounding.h), as its origin is off
+// the receiving surface, and the segment between the two is shortened by this fraction of its
+// length besides (pbrt-v4's SpawnRayTo and ShadowEpsilon).
 constexpr float kShadowRayShortening = 1e-4f;
+
+// The origin of a ray leaving `surface` (its normal turned toward the viewer) along `direction`:
+// `reference`, the origin on the viewer's side, unless the ray crosses to the other side.
+glm::vec3 spawnOrigin(const SurfaceHit& surface, const glm::vec3& reference, const glm::vec3& direction) {
+    return glm::dot(direction, surface.normal) < 0.0f ? offsetRayOrigin(surface, direction) : reference;
+}
 
 // Turns the geometric normal toward the viewer direction `toViewer`, and the shading normal onto
 // the geometric normal's side; returns the cosine between the viewer and the geometric normal and
@@ -177,7 +187,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     const Ray& ray = path.ray;
     if (!hit) {
         // The path left the scene: what arrives along it comes from the lights at infinity.
-        const LightHit miss{glm::vec3(0.0f), std::numeric_limits<float>::infinity()};
+        const LightHit miss{};
         for (uint32_t light : lights.lightsAtInfinity()) {
             radiance += path.weight * emittedAlong(light, ray.direction, miss, path.previous);
         }
@@ -187,7 +197,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     if (!isBlack(path.absorption)) path.weight *= glm::exp(-path.absorption * hit->t);
     const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
     if (triangle.light >= 0) {
-        const LightHit onLight{triangle.normal, hit->t, {hit->u, hit->v}};
+        const LightHit onLight{triangle.normal, {hit->u, hit->v}};
         radiance += path.weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
                                                onLight, path.previous);
     }
@@ -208,10 +218,16 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     const Frame frame = Frame::fromNormal(surface.shadingNormal);
     const glm::vec3 wo = frame.toLocal(-ray.direction);
     const Bsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv, viewer.front);
+    // Lights are sampled from, and their densities for MIS measured from, the origin that a
+    // reflected ray leaves from rather than the hit point: far from the origin of the coordinates
+    // the two are apart by a margin the scene's size does not bound, and the light sample and the
+    // reflected ray it is weighed against must see the emitters from one point for their MIS
+    // weights to sum to one.
+    const glm::vec3 reference = offsetRayOrigin(surface, surface.normal);
     // Light that reaches the camera after this vertex's reflection counts as bounce + 1
     // bounces, which the depth allows here. A delta lobe reflects nothing a light sample finds.
     if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
-        shadow = lightSample(surface, frame, wo, bsdf, lightU);
+        shadow = lightSample(surface, reference, frame, wo, bsdf, lightU);
         if (shadow) shadow->contribution = path.weight * shadow->contribution;
     }
     BsdfNumbers numbers{diffuseU};
@@ -237,8 +253,8 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     }
     // Emission found after a delta lobe could not have been found by a light sample: it counts
     // at full weight (directionPdf 0).
-    path.previous = PreviousVertex{surface.point, isSpecular(sampled->flags) ? 0.0f : sampled->pdf};
-    path.ray = Ray{offsetRayOrigin(surface, direction), direction};
+    path.previous = PreviousVertex{reference, isSpecular(sampled->flags) ? 0.0f : sampled->pdf};
+    path.ray = Ray{spawnOrigin(surface, reference, direction), direction};
     return true;
 }
 
@@ -268,11 +284,11 @@ glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) c
 }
 
 std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
-    const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const Bsdf& bsdf,
-    const glm::vec3& u) const {
+    const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame, const glm::vec3& wo,
+    const Bsdf& bsdf, const glm::vec3& u) const {
     const LightChoice choice = scene_.lights().sampler().choose(u.x);
     const Light& light = scene_.lights().light(choice.light);
-    const auto sample = light.sample(surface.point, {u.y, u.z});
+    const auto sample = light.sample(reference, {u.y, u.z});
     if (!sample) return std::nullopt;
     const glm::vec3 wi = frame.toLocal(sample->direction);
     if (isTransmission(bsdf.flags())) {
@@ -286,12 +302,20 @@ std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
     const glm::vec3 f = bsdf.evaluate(wo, wi);
     if (isBlack(f)) return std::nullopt;
     const float cosine = std::abs(wi.z);
-    const glm::vec3 origin = offsetRayOrigin(surface, sample->direction);
-    // The origin's offset from the surface is far smaller than the shortening, so the distance
-    // from the surface point serves for the shadow ray too.
-    const float reach = sample->onSurface ? sample->distance * (1.0f - kShadowRayShortening)
-                                          : sample->distance;
-    const Ray ray{origin, sample->direction};
+    const glm::vec3 origin = spawnOrigin(surface, reference, sample->direction);
+    Ray ray{origin, sample->direction};
+    float reach = sample->distance;
+    if (sample->onSurface) {
+        // From one offset point to the other, so that rounding at either end, which grows with
+        // the distance from the origin of the coordinates, cannot make the emitter occlude itself.
+        const glm::vec3 end =
+            offsetRayOrigin(sample->point, sample->pointError, sample->normal, -sample->direction);
+        const glm::vec3 segment = end - origin;
+        const float length = glm::length(segment);
+        if (!(length > 0.0f)) return std::nullopt;
+        ray.direction = segment / length;
+        reach = length * (1.0f - kShadowRayShortening);
+    }
     if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (cosine / choice.probability)};
     const float lightPdf = choice.probability * sample->pdf;
     const float misWeight =

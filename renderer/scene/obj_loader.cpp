@@ -251,6 +251,7 @@ struct MtlMaterial {
     bool hasEmission = false;  // whether it has a Ke line
     bool hasIor = false;       // an Ni line (tinyobjloader reads an absent one as 1)
     bool hasFilter = false;    // a Tf line
+    size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
         std::string key;
         MtlTextureStatement statement;
@@ -296,6 +297,10 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             } else {
                 materials.back().textures.push_back({std::string(key), *statement, line});
             }
+            return;
+        }
+        if (key == "Tf" && words.size() > 1 && (words[1] == "xyz" || words[1] == "spectral")) {
+            materials.back().unreadFilterLine = line;
             return;
         }
         if (colour) checkNumbers(name, line, words, 1, 3);
@@ -482,6 +487,10 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     SceneTextures textures(bundle, warnings);
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+        if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
+            warnings.push_back(materials[i].file + ":" + std::to_string(materials[i].unreadFilterLine) +
+                               ": Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1");
+        }
         addTextures(mesh.materials.back(), materials[i], mtlNames[i], textures, warnings);
     }
     // vt u v as they are (texture.h's convention is OBJ's); the w of 3D texture coordinates

@@ -347,3 +347,14 @@ TEST_CASE("obj: a dielectric's Ni and Tf are checked") {
     CHECK(error("Tf 1.5 1 1\n") == "scene.mtl:1: material 'g' has a Tf outside 0..1");
     CHECK(error("Ni x\n") == "scene.mtl:3: 'x' is not a number");
 }
+
+TEST_CASE("obj: a Tf in CIE XYZ or spectral form is skipped, with a warning only where it would be used") {
+    const std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl glass\nf 1 2 3\nusemtl paint\nf 1 2 3\n";
+    const std::string mtl = "newmtl glass\nillum 7\nTf xyz 0.5 0.5 0.5\nnewmtl paint\nillum 2\nTf spectral glass.rfl\n";
+    LoadReport report;
+    const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
+    REQUIRE(mesh.materials.size() >= 2);
+    CHECK(mesh.materials[0].transmissionFilter == glm::vec3(1.0f));
+    CHECK(report.warnings ==
+          std::vector<std::string>{"scene.mtl:3: Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1"});
+}
