@@ -1,6 +1,6 @@
 // Bad input, table-driven: every loader and option answers with one line "strata: ..." naming the
 // file and line or the option, a non-zero exit, no crash or hang, and an existing output file left
-// untouched. The same table is the README's reliability section.
+// untouched. The same tables are docs/reliability.md's "Bad input" and "Tolerated input".
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -49,7 +49,7 @@ std::string gltfPlacedThrice() {
 }
 
 struct BadInputCase {
-    const char* what;       // the README's description of the case
+    const char* what;       // the case, as docs/reliability.md describes it
     std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
     const char* arguments;  // strata's arguments; {dir} is the case's folder
     const char* expected;   // text the one error line must contain
@@ -206,7 +206,7 @@ const std::vector<BadInputCase> kCliCases = {
 
 // Input that other tools open: it renders, with one "warning: " line for each thing tolerated.
 struct ToleratedCase {
-    const char* what;  // the README's description of the case
+    const char* what;  // the case, as docs/reliability.md describes it
     std::map<std::string, std::string> files;
     std::vector<std::string> warnings;  // each printed as "warning: {dir}/..."
     const char* summary;                // text the load summary line must contain
