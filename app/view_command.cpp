@@ -31,18 +31,18 @@ struct ViewCommand {
 };
 
 void ViewCommand::run() const {
-    if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (targetSpp < 0) throw UsageError("--target-spp: must be at least 0 (0: no limit)");
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
-        throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
+        throw UsageError("--target-seconds: must be in 0..1e7 (0: no limit)");
     }
-    if (frames < 0) throw Error("--frames: must be at least 0");
-    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
+    if (frames < 0) throw UsageError("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
-        throw Error("--screenshot: must be a .png file");
+        throw UsageError("--screenshot: must be a .png file");
     }
-    if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
+    if (!screenshot.empty() && frames == 0) throw UsageError("--screenshot needs --frames N");
 
     // Read once: the map lights the first scene and stays in the settings for the scenes opened
     // after it.
@@ -84,11 +84,11 @@ void ViewCommand::run() const {
     if (!screenshot.empty()) run.screenshot = screenshot;
     // The image size follows the window; --width/--height set the window when given.
     if (render.width) {
-        if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
+        if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
         run.width = *render.width;
     }
     if (render.height) {
-        if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
+        if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
         run.height = *render.height;
     }
 

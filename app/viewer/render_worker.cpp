@@ -34,7 +34,7 @@ constexpr double kStepGroupSeconds = 2.0;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
-           a.fovYDegrees == b.fovYDegrees;
+           a.fovYDegrees == b.fovYDegrees && a.orthographicHalfHeight == b.orthographicHalfHeight;
 }
 
 double secondsSince(Clock::time_point start) {

@@ -51,6 +51,10 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
 
 SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath) {
+    if (std::filesystem::is_directory(path)) {
+        throw Error(path.string() + ": is a folder, not a scene file (give one of its " + knownSceneExtensions() +
+                    " files)");
+    }
     if (!std::filesystem::is_regular_file(path)) {
         throw Error(path.string() + ": no such scene file");
     }

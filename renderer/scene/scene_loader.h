@@ -23,7 +23,7 @@ struct LoadedScene {
 // Reads the scene's files: the scene file `path` and those it refers to, the scene description
 // NAME.json beside it when there is one (and the files it refers to), and the camera file when
 // given. Throws strata::Error naming a missing or malformed file; for a file that is not there,
-// "PATH: no such scene file", else for an extension no format has,
+// "PATH: no such scene file" ("PATH: is a folder, ..." for a folder), else for an extension no format has,
 // "PATH: unknown scene format '.EXT' (known: ...)", before any file is read.
 SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
