@@ -20,10 +20,10 @@ float powerHeuristic(float own, float other) {
     return a > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// A shadow ray toward a point on an emitter ends short of the emitter's surface: its end is moved
-// off the surface by the sampled point's rounding error bound (rounding.h), as its origin is off
-// the receiving surface, and the segment between the two is shortened by this fraction of its
-// length besides (pbrt-v4's SpawnRayTo and ShadowEpsilon).
+// A shadow ray toward a point on an emitter ends short of the emitter's surface: the segment is
+// shortened by this fraction of its length, and where that does not clear the sampled point's
+// rounding error bound (rounding.h), its end is moved off the surface by that bound first, as its
+// origin is off the receiving surface (pbrt-v4's SpawnRayTo and ShadowEpsilon).
 constexpr float kShadowRayShortening = 1e-4f;
 
 // The origin of a ray leaving `surface` (its normal turned toward the viewer) along `direction`:
@@ -306,15 +306,23 @@ std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
     Ray ray{origin, sample->direction};
     float reach = sample->distance;
     if (sample->onSurface) {
-        // From one offset point to the other, so that rounding at either end, which grows with
-        // the distance from the origin of the coordinates, cannot make the emitter occlude itself.
-        const glm::vec3 end =
-            offsetRayOrigin(sample->point, sample->pointError, sample->normal, -sample->direction);
-        const glm::vec3 segment = end - origin;
-        const float length = glm::length(segment);
-        if (!(length > 0.0f)) return std::nullopt;
-        ray.direction = segment / length;
-        reach = length * (1.0f - kShadowRayShortening);
+        // The segment shortened ends off the emitter by shortening x distance x cos along its
+        // normal. Where that does not clear the sampled point's rounding error, which grows with
+        // the distance from the origin of the coordinates, the ray runs from one offset point to
+        // the other instead, so that the emitter cannot occlude itself.
+        const float cosLight = -glm::dot(sample->normal, sample->direction);
+        const float clearance = kShadowRayShortening * sample->distance * cosLight;
+        if (clearance > 2.0f * glm::dot(glm::abs(sample->normal), sample->pointError)) {
+            reach *= 1.0f - kShadowRayShortening;
+        } else {
+            const glm::vec3 end =
+                offsetRayOrigin(sample->point, sample->pointError, sample->normal, -sample->direction);
+            const glm::vec3 segment = end - origin;
+            const float length = glm::length(segment);
+            if (!(length > 0.0f)) return std::nullopt;
+            ray.direction = segment / length;
+            reach = length * (1.0f - kShadowRayShortening);
+        }
     }
     if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (cosine / choice.probability)};
     const float lightPdf = choice.probability * sample->pdf;

@@ -18,7 +18,11 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     centroid_ = (glm::dvec3(p0) + glm::dvec3(p1) + glm::dvec3(p2)) / 3.0;
     radius_ = std::max({glm::distance(centroid_, glm::dvec3(p0)), glm::distance(centroid_, glm::dvec3(p1)),
                         glm::distance(centroid_, glm::dvec3(p2))});
-    largest_ = maxComponent(glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2)));
+    // One bound covers the points both samplers compute: p0 + b1 e1 + b2 e2 in float with
+    // barycentrics at most 1 (a few operations on terms up to |p0| + |e1| + |e2|), and a point of
+    // the triangle found in double and rounded once; plus Embree's rounding.
+    const float largest = maxComponent(glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2)));
+    pointError_ = gammaBound(5) * (glm::abs(p0) + glm::abs(p1 - p0) + glm::abs(p2 - p0)) + traversalError(largest);
 }
 
 AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
@@ -70,8 +74,7 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     const glm::vec3 onLight(glm::dvec3(point) + distance * direction);
     return LightSample{glm::vec3(direction), static_cast<float>(distance),
                        radianceAlong(glm::dvec3(point), direction, distance),
-                       static_cast<float>(1.0 / triangle->solidAngle()), true, onLight,
-                       gammaBound(1) * glm::abs(onLight) + traversalError(largest_), normal_};
+                       static_cast<float>(1.0 / triangle->solidAngle()), true, onLight, pointError_, normal_};
 }
 
 std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
@@ -87,12 +90,8 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    // p0 + b1 e1 + b2 e2 with rounded edges: a few operations on terms up to the largest
-    // corner's size.
-    const glm::vec3 terms = glm::abs(p0_) + glm::abs(b1 * (p1_ - p0_)) + glm::abs(b2 * (p2_ - p0_));
-    const glm::vec3 error = gammaBound(5) * terms + traversalError(largest_);
     return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true,
-                       onLight, error, normal_};
+                       onLight, pointError_, normal_};
 }
 
 float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const {
