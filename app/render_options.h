@@ -21,13 +21,13 @@ struct RenderOptions {
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
-    int depth = 5;
+    int depth = kProgramDefaults.depth;
     std::optional<double> epsilon;  // when set, the depth comes from the truncation error
-    std::string sampler = "strata24-bsdf";
+    std::string sampler{samplerName(kProgramDefaults.sampler)};
     uint64_t seed = 0;
     int threads = 0;
-    bool nee = true;
-    int rouletteDepth = kRouletteDepthDefault;
+    bool nee = kProgramDefaults.nextEventEstimation;
+    int rouletteDepth = kProgramDefaults.rouletteDepth;
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y

@@ -76,6 +76,10 @@ double chiSquareCritical(size_t degrees);
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material);
 
+// A UV sphere of `rings` x 2 `rings` quads appended to `mesh` with material `material`, facing
+// out (counter-clockwise seen from outside), with unit vertex normals pointing out.
+void addSphere(MeshData& mesh, const glm::vec3& centre, float radius, int rings, uint32_t material);
+
 // The furnace (notes section 5.1): the cube [-1,1]^3 seen from inside, every face of `material`
 // facing inward. With Kd = rho and Ke = Le the exact radiance at depth K is
 // Le (1 - rho^(K+1)) / (1 - rho).

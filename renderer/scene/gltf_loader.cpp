@@ -26,12 +26,27 @@
 namespace strata {
 namespace {
 
-// The extensions whose every requirement Strata meets; another one in extensionsRequired means
-// the file cannot be rendered as its author meant (glTF 2.0, "Specifying Extensions"). The
-// compressions are decoded (gltf_meshopt.h, gltf_draco.h) before the model is read.
-constexpr std::array<std::string_view, 7> kImplementedExtensions{
-    "EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_lights_punctual", "KHR_materials_emissive_strength",
-    "KHR_mesh_quantization", "KHR_meshopt_compression", "KHR_texture_transform"};
+// The extensions Strata reads (gltf_materials.h says how far for the materials'); another one in
+// extensionsRequired means the file cannot be rendered as its author meant (glTF 2.0, "Specifying
+// Extensions"), and one in extensionsUsed only is a warning. The compressions are decoded
+// (gltf_meshopt.h, gltf_draco.h) before the model is read.
+constexpr std::array<std::string_view, 12> kImplementedExtensions{
+    "EXT_meshopt_compression",         "KHR_draco_mesh_compression", "KHR_lights_punctual",
+    "KHR_materials_clearcoat",         "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_specular",          "KHR_materials_transmission", "KHR_materials_volume",
+    "KHR_mesh_quantization",           "KHR_meshopt_compression",    "KHR_texture_transform"};
+
+bool implemented(const std::string& extension) {
+    return std::find(kImplementedExtensions.begin(), kImplementedExtensions.end(), extension) !=
+           kImplementedExtensions.end();
+}
+
+// A warning for each extension the file uses that Strata does not read.
+void warnUnreadExtensions(GltfModel& gltf) {
+    for (const std::string& extension : gltf.model.extensionsUsed) {
+        if (!implemented(extension)) gltf.warnOnce("uses extension " + extension + ", which Strata does not read; ignored");
+    }
+}
 
 // The files of a .gltf's URIs while reading: from its folder, each kept for the bundle.
 struct FolderFiles {
@@ -113,8 +128,7 @@ void checkRequiredExtensions(const nlohmann::json& document, const std::string& 
     for (const nlohmann::json& extension : *required) {
         if (!extension.is_string()) continue;
         const auto name = extension.get<std::string>();
-        if (std::find(kImplementedExtensions.begin(), kImplementedExtensions.end(), name) ==
-            kImplementedExtensions.end()) {
+        if (!implemented(name)) {
             throw Error(path + ": requires extension " + name + ", which Strata does not implement");
         }
     }
@@ -226,6 +240,7 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const 
     decodeMeshoptBufferViews(model, path);
     decodeDracoPrimitives(model, path);
     GltfModel gltf{model, path, images, {}};
+    warnUnreadExtensions(gltf);
     std::vector<std::string> textureWarnings;
     SceneTextures textures(bundle, textureWarnings);
     size_t dropped = 0;

@@ -15,10 +15,11 @@ namespace strata {
 namespace {
 
 Material metallicRoughnessMaterial(const std::string& name, const glm::vec3& baseColor, float metallic,
-                                   float roughness, const glm::vec3& emission) {
+                                   float roughness, const glm::vec3& emission,
+                                   const glm::vec3& dielectricF0 = glm::vec3(0.04f)) {
     Material material;
     material.name = name;
-    const LayeredReflectance r = fromMetallicRoughness(baseColor, metallic);
+    const LayeredReflectance r = fromMetallicRoughness(baseColor, metallic, dielectricF0);
     material.diffuse = r.diffuse;
     material.specular = r.specular;
     material.roughness = roughness;
@@ -55,6 +56,43 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
         return nullptr;
     }
     return textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
+}
+
+// A material extension's object, or null when the material does not have it.
+const tinygltf::Value* extensionOf(const tinygltf::Material& m, const std::string& name) {
+    const auto it = m.extensions.find(name);
+    return it == m.extensions.end() || !it->second.IsObject() ? nullptr : &it->second;
+}
+
+// The number `key` of an extension's object, `fallback` when it is absent; a failure naming the
+// material, the extension and the key when it is not a number in [low, high].
+float numberOf(const GltfModel& gltf, const tinygltf::Value& extension, const std::string& key, double fallback,
+               double low, double high, const std::string& where) {
+    if (!extension.Has(key)) return static_cast<float>(fallback);
+    const tinygltf::Value& value = extension.Get(key);
+    const double number = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+    // Checked after narrowing, so that a double too large for a float cannot pass as finite.
+    const auto narrowed = static_cast<float>(number);
+    if (!std::isfinite(narrowed) || narrowed < low || narrowed > high) {
+        gltf.fail(where + ": " + key + " is not a number in " + std::to_string(low) + ".." + std::to_string(high));
+    }
+    return narrowed;
+}
+
+// The texture an extension's textureInfo `key` names, as textureOf reads a core one.
+std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
+                                                const std::string& key, const std::string& where, TextureEncoding encoding) {
+    if (!extension.Has(key)) return nullptr;
+    const tinygltf::Value& info = extension.Get(key);
+    const tinygltf::Value& index = info.Get("index");
+    if (!info.IsObject() || !index.IsInt()) gltf.fail(where + " " + key + " needs a texture index");
+    const tinygltf::Value& texCoord = info.Get("texCoord");
+    tinygltf::ExtensionMap nested;
+    if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+        for (const std::string& name : info.Get("extensions").Keys()) nested[name] = info.Get("extensions").Get(name);
+    }
+    return textureOf(gltf, textures, where + " " + key, index.GetNumberAsInt(), texCoord.IsInt() ? texCoord.GetNumberAsInt() : 0,
+                     nested, encoding);
 }
 
 // The numbers of `name` in a KHR_texture_transform object, else `otherwise`.
@@ -147,9 +185,35 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     }
     const glm::vec3 baseColor(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
     const auto metallic = static_cast<float>(pbr.metallicFactor);
+    // KHR_materials_ior and KHR_materials_specular: a dielectric's reflectance at normal
+    // incidence, ((ior - 1) / (ior + 1))^2 times the specular colour, at most 1, times the factor.
+    float ior = 1.5f;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_ior")) {
+        ior = numberOf(gltf, *e, "ior", 1.5, 1.0, 10.0, name + ": KHR_materials_ior");
+    }
+    // (In double: at ior 1.5 it rounds to the float 0.04 exactly, as the core model's constant.)
+    glm::vec3 dielectricF0(static_cast<float>(std::pow((ior - 1.0) / (ior + 1.0), 2.0)));
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_specular")) {
+        const std::string where = name + ": KHR_materials_specular";
+        const float factor = numberOf(gltf, *e, "specularFactor", 1.0, 0.0, 1.0, where);
+        glm::vec3 colour(1.0f);
+        if (e->Has("specularColorFactor")) {
+            const tinygltf::Value& c = e->Get("specularColorFactor");
+            if (!c.IsArray() || c.ArrayLen() != 3) gltf.fail(where + ": specularColorFactor needs 3 numbers");
+            for (int i = 0; i < 3; ++i) {
+                const float v = c.Get(i).IsNumber() ? static_cast<float>(c.Get(i).GetNumberAsDouble()) : -1.0f;
+                if (!(v >= 0.0f) || !std::isfinite(v)) gltf.fail(where + ": specularColorFactor needs numbers >= 0");
+                colour[i] = v;
+            }
+        }
+        dielectricF0 = glm::min(dielectricF0 * colour, glm::vec3(1.0f)) * factor;
+        if (e->Has("specularTexture") || e->Has("specularColorTexture")) {
+            gltf.warnOnce(where + ": its textures are not applied (the factors are)");
+        }
+    }
     Material material = metallicRoughnessMaterial(
         m.name, baseColor, metallic, static_cast<float>(pbr.roughnessFactor),
-        glm::vec3(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2])));
+        glm::vec3(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2])), dielectricF0);
 
     MaterialTextures& maps = material.textures;
     maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
@@ -162,7 +226,55 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     maps.normal = textureOf(gltf, textures, name + " normalTexture", m.normalTexture.index, m.normalTexture.texCoord,
                             m.normalTexture.extensions, TextureEncoding::Data);
     maps.normalScale = static_cast<float>(m.normalTexture.scale);
-    if (material.hasReflectanceTextures()) material.metallicRoughness = MetallicRoughness{baseColor, metallic};
+
+    // KHR_materials_transmission: the dielectric part (1 - metallic) transmits this share, through
+    // a dielectric of the material's index and roughness tinted by the base colour;
+    // KHR_materials_volume: a closed volume that absorbs, else (absent, or thickness 0) a thin wall.
+    float transmission = 0.0f;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_transmission")) {
+        const std::string where = name + ": KHR_materials_transmission";
+        transmission = numberOf(gltf, *e, "transmissionFactor", 0.0, 0.0, 1.0, where);
+        maps.transmission = extensionTexture(gltf, textures, *e, "transmissionTexture", name, TextureEncoding::Data);
+    }
+    material.transmission = transmission * (1.0f - metallic);
+    material.ior = ior;
+    material.transmissionFilter = baseColor;
+    material.thinWalled = true;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_volume")) {
+        const std::string where = name + ": KHR_materials_volume";
+        material.thinWalled = numberOf(gltf, *e, "thicknessFactor", 0.0, 0.0, 1e30, where) == 0.0f;
+        material.attenuationDistance =
+            numberOf(gltf, *e, "attenuationDistance", std::numeric_limits<double>::infinity(), 0.0,
+                     std::numeric_limits<double>::infinity(), where);
+        if (!(material.attenuationDistance > 0.0f)) gltf.fail(where + ": attenuationDistance must be > 0");
+        if (e->Has("attenuationColor")) {
+            const tinygltf::Value& c = e->Get("attenuationColor");
+            if (!c.IsArray() || c.ArrayLen() != 3) gltf.fail(where + ": attenuationColor needs 3 numbers");
+            for (int i = 0; i < 3; ++i) {
+                const float v = c.Get(i).IsNumber() ? static_cast<float>(c.Get(i).GetNumberAsDouble()) : -1.0f;
+                if (!(v >= 0.0f && v <= 1.0f)) gltf.fail(where + ": attenuationColor needs numbers in 0..1");
+                material.attenuationColor[i] = v;
+            }
+        }
+    }
+    if (material.thinWalled && material.transmission > 0.0f && material.roughness > 0.0f) {
+        gltf.warnOnce(name + ": a thin-walled transmission renders smooth (its roughness applies to reflection)");
+    }
+    // KHR_materials_clearcoat: a coat of index 1.5 (F0 0.04) over the material.
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_clearcoat")) {
+        const std::string where = name + ": KHR_materials_clearcoat";
+        material.clearcoat = numberOf(gltf, *e, "clearcoatFactor", 0.0, 0.0, 1.0, where);
+        material.clearcoatRoughness = numberOf(gltf, *e, "clearcoatRoughnessFactor", 0.0, 0.0, 1.0, where);
+        maps.clearcoat = extensionTexture(gltf, textures, *e, "clearcoatTexture", name, TextureEncoding::Data);
+        maps.clearcoatRoughness =
+            extensionTexture(gltf, textures, *e, "clearcoatRoughnessTexture", name, TextureEncoding::Data);
+        if (e->Has("clearcoatNormalTexture")) {
+            gltf.warnOnce(where + ": clearcoatNormalTexture is not applied (the coat takes the base's normal)");
+        }
+    }
+    if (material.hasReflectanceTextures()) {
+        material.metallicRoughness = MetallicRoughness{baseColor, metallic, dielectricF0, transmission};
+    }
 
     double cutoff = m.alphaCutoff;
     if (m.alphaMode == "BLEND") {

@@ -9,7 +9,19 @@
 //   normalTexture   a tangent-space normal map with its `scale`; the tangents come from the
 //                   UVs (a TANGENT attribute is not read), the bitangent toward +v as the map's +y;
 //   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND is taken
-//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha.
+//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha;
+//   KHR_materials_ior, KHR_materials_specular  the dielectric reflectance at normal incidence,
+//                   ((ior - 1) / (ior + 1))^2 x specularColorFactor (at most 1) x specularFactor
+//                   (their textures are not applied: a warning), and the index of refraction;
+//   KHR_materials_transmission  factor x transmissionTexture's R of the dielectric part
+//                   (1 - metallic) is a dielectric of that index and the material's roughness,
+//                   tinted by the base colour; metallic 1 at roughness 0 is a perfect mirror;
+//   KHR_materials_volume  a closed volume with Beer-Lambert absorption (attenuationColor kept
+//                   after attenuationDistance) where thicknessFactor > 0, else (absent too) a thin
+//                   wall (a rough thin wall transmits smooth: a warning);
+//   KHR_materials_clearcoat  a coat of index 1.5 over the material, factor x clearcoatTexture's R,
+//                   roughness x clearcoatRoughnessTexture's G (clearcoatNormalTexture is not
+//                   applied: a warning).
 // doubleSided needs nothing: Strata reflects on both sides of every triangle. occlusionTexture is
 // not read: a path tracer finds occlusion itself. Only TEXCOORD_0 is read; a texture on another
 // set is a warning. KHR_texture_transform's offset, rotation and scale move the UVs of the

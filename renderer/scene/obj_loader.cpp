@@ -298,6 +298,9 @@ struct MtlMaterial {
     // 0, which cannot be told from an explicit 0).
     bool hasRoughness = false;
     bool hasEmission = false;  // whether it has a Ke line
+    bool hasIor = false;       // an Ni line (tinyobjloader reads an absent one as 1)
+    bool hasFilter = false;    // a Tf line
+    size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
         std::string key;
         MtlTextureStatement statement;
@@ -313,7 +316,7 @@ std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
 // tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
-// uses are checked; the others (Ka, Tf, Ni, d, illum, ...) pass as they are. The texture
+// uses are checked; the others (Ka, d, Tr, ...) pass as they are. The texture
 // statements Strata reads (mtl_texture_statement.h) are kept with their material instead, and
 // one that names no file is a warning.
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
@@ -329,8 +332,8 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             material.line = line;
             return;
         }
-        const bool colour = key == "Kd" || key == "Ke" || key == "Ks";
-        const bool scalar = key == "Ns" || key == "Pr";
+        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf";
+        const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum";
         const bool texture = isMtlTextureKey(key);
         if ((colour || scalar || texture) && materials.size() == first) {
             failAt(name, line, "'" + std::string(key) + "' before any newmtl");
@@ -345,10 +348,16 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             }
             return;
         }
+        if (key == "Tf" && words.size() > 1 && (words[1] == "xyz" || words[1] == "spectral")) {
+            materials.back().unreadFilterLine = line;
+            return;
+        }
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
         if (key == "Pr") materials.back().hasRoughness = true;
         if (key == "Ke") materials.back().hasEmission = true;
+        if (key == "Ni") materials.back().hasIor = true;
+        if (key == "Tf") materials.back().hasFilter = true;
         appendLine(tinyobjText, words);
     });
 }
@@ -393,7 +402,14 @@ bool isFinite(const glm::vec3& v) {
 }
 
 // The renderer's material of an MTL material as tinyobjloader read it; throws strata::Error
-// naming its newmtl line for values that are not physical.
+// naming its newmtl line for values that are not physical. The illumination models that ask for
+// ray-traced refraction or reflection (MTL specification, "illum"):
+//   illum 4, 6, 7   a dielectric of index Ni (1.5 when absent), transmission filter Tf (1 1 1
+//                   when absent) and roughness Pr (0, smooth, when absent; GGX alpha = Pr^2);
+//                   its Kd and Ks are not used (its reflection is the interface's Fresnel);
+//   illum 3, 5      with Ks, and Pr 0 (or no Pr and Ns >= 10000): a perfect mirror of F0 = Ks
+//                   (with Kd as well: a smooth Ks coat over Kd).
+// Every other illum is the layered material of Kd, Ks and Pr (or Ns).
 Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     Material material;
     material.name = source.name;
@@ -417,6 +433,24 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
         throw Error(at + " has Ks above 1 (creates energy)");
     }
     if (material.roughness < 0.0f || material.roughness > 1.0f) throw Error(at + " has Pr outside 0..1");
+    if (m.illum == 4 || m.illum == 6 || m.illum == 7) {
+        material.transmission = 1.0f;
+        material.diffuse = glm::vec3(0.0f);
+        material.specular = glm::vec3(0.0f);
+        material.ior = source.hasIor ? m.ior : 1.5f;
+        if (source.hasFilter) material.transmissionFilter = {m.transmittance[0], m.transmittance[1], m.transmittance[2]};
+        material.roughness = source.hasRoughness ? m.roughness : 0.0f;
+        if (!(material.ior > 0.0f) || !std::isfinite(material.ior)) {
+            throw Error(at + " (illum " + std::to_string(m.illum) + ", a dielectric) has an Ni that is not a positive number");
+        }
+        const glm::vec3& tf = material.transmissionFilter;
+        if (!isFinite(tf) || glm::min(glm::min(tf.x, tf.y), tf.z) < 0.0f || glm::max(glm::max(tf.x, tf.y), tf.z) > 1.0f) {
+            throw Error(at + " has a Tf outside 0..1");
+        }
+    } else if ((m.illum == 3 || m.illum == 5) && glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 0.0f &&
+               (source.hasRoughness ? m.roughness == 0.0f : m.shininess >= 10000.0f)) {
+        material.roughness = 0.0f;
+    }
     return material;
 }
 
@@ -502,6 +536,10 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     SceneTextures textures(bundle, warnings);
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+        if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
+            warnings.push_back(materials[i].file + ":" + std::to_string(materials[i].unreadFilterLine) +
+                               ": Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1");
+        }
         addTextures(mesh.materials.back(), materials[i], mtlNames[i], textures, warnings);
     }
     // vt u v as they are (texture.h's convention is OBJ's); the w of 3D texture coordinates

@@ -228,6 +228,65 @@ TEST_CASE("gltf: metallic-roughness factors onto Kd, Ks, Pr; emission times its 
     CHECK(mesh.materials[2].diffuse == glm::vec3(0.0f));
 }
 
+TEST_CASE("gltf: transmission, ior, volume, specular and clearcoat onto the dielectric, its volume and the coat") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    model.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume",
+                                   "KHR_materials_specular", "KHR_materials_clearcoat", "EXT_unknown_thing"};
+    const json base = {{"baseColorFactor", {0.9, 0.8, 0.7, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0}};
+    model.doc["materials"] = json::array({
+        {{"name", "glass"},
+         {"pbrMetallicRoughness", base},
+         {"extensions",
+          {{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+           {"KHR_materials_ior", {{"ior", 1.33}}},
+           {"KHR_materials_volume", {{"thicknessFactor", 0.5}, {"attenuationDistance", 2}, {"attenuationColor", {0.5, 1, 1}}}}}}},
+        {{"name", "pane"}, {"pbrMetallicRoughness", base}, {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}},
+        {{"name", "coated"},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.1, 0.1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
+         {"extensions",
+          {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8}, {"clearcoatRoughnessFactor", 0.1}}},
+           {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {1, 0.5, 0.5}}}}}}},
+        {{"name", "chrome"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}},
+    });
+    for (int m = 0; m < 4; ++m) model.meshNode({{"attributes", {{"POSITION", positions}}}, {"material", m}});
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    REQUIRE(mesh.materials.size() == 4);
+    const Material& glass = mesh.materials[0];
+    CHECK(glass.transmission == 1.0f);
+    CHECK(glass.ior == doctest::Approx(1.33));
+    CHECK(glass.transmissionFilter == glm::vec3(0.9f, 0.8f, 0.7f));
+    CHECK_FALSE(glass.thinWalled);
+    CHECK(glass.attenuationDistance == 2.0f);
+    CHECK(glass.attenuationColor == glm::vec3(0.5f, 1.0f, 1.0f));
+    const Material& pane = mesh.materials[1];
+    CHECK(pane.transmission == 0.5f);
+    CHECK(pane.thinWalled);  // no KHR_materials_volume
+    const Material& coated = mesh.materials[2];
+    CHECK(coated.clearcoat == 0.8f);
+    CHECK(coated.clearcoatRoughness == doctest::Approx(0.1));
+    checkNear(coated.specular, glm::vec3(0.02f, 0.01f, 0.01f));  // 0.04 x (1, 0.5, 0.5) x 0.5
+    const MaterialTable table(mesh.materials);
+    CHECK(table.bsdf(0).as<SmoothDielectric>() != nullptr);
+    CHECK(table.bsdf(0).as<SmoothDielectric>()->eta() == doctest::Approx(1.33));
+    CHECK(table.bsdf(0, {}, false).as<SmoothDielectric>()->eta() == doctest::Approx(1.0 / 1.33));
+    // Beer-Lambert: exp(-sigma 2) = attenuationColor.
+    CHECK(std::exp(-2.0f * table.absorption(0).x) == doctest::Approx(0.5));
+    CHECK(table.absorption(0).y == 0.0f);
+    CHECK(table.bsdf(1).as<TransmissionBlend<ThinDielectric>>() != nullptr);
+    CHECK(table.bsdf(2).as<Coated<LayeredBsdf>>() != nullptr);
+    CHECK(table.bsdf(3).as<SmoothConductor>() != nullptr);
+    // The extensions read are not warned about; one that is not read is.
+    int unread = 0;
+    for (const std::string& warning : report.warnings) {
+        INFO(warning);
+        CHECK(warning.find("KHR_materials") == std::string::npos);
+        if (warning.find("EXT_unknown_thing") != std::string::npos) ++unread;
+    }
+    CHECK(unread == 1);
+}
+
 // A PNG of 8-bit RGBA pixels in memory.
 std::string rgbaPng(int width, int height, const std::vector<unsigned char>& pixels) {
     std::string out;
@@ -279,8 +338,9 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     CHECK(m.cutOut({0.75f, 0.5f}));
     // The per-hit BSDF: base colour (0.5, 0, 0) at the red texel, metallic 0 x 1 = 0: a dielectric.
     const MaterialTable table(mesh.materials);
-    const LayeredBsdf red = table.bsdf(0, {0.25f, 0.5f});
-    const glm::vec3 albedo = red.tabulatedAlbedo({0.0f, 0.0f, 1.0f});
+    const Bsdf bsdf = table.bsdf(0, {0.25f, 0.5f});
+    const LayeredBsdf& red = *bsdf.as<LayeredBsdf>();
+    const glm::vec3 albedo = red.albedo({0.0f, 0.0f, 1.0f});
     CHECK(albedo.x > albedo.y);
     CHECK(albedo.y == albedo.z);
     // Roughness 0.5 x 1 quantised to level 8 of 16: exactly 0.5, the factor's own lobe.
@@ -402,9 +462,9 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     const int indices = model.accessor(std::vector<uint16_t>{0, 1, 7}, "SCALAR", 5123, 3);
     Model required = model;
     required.meshNode({{"attributes", {{"POSITION", positions}}}});
-    required.doc["extensionsRequired"] = {"KHR_materials_volume"};
+    required.doc["extensionsRequired"] = {"KHR_materials_sheen"};
     CHECK(errorOf(required.gltf()) ==
-          "mem/model.gltf: requires extension KHR_materials_volume, which Strata does not implement");
+          "mem/model.gltf: requires extension KHR_materials_sheen, which Strata does not implement");
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
     CHECK(errorOf(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
