@@ -1,6 +1,6 @@
 #pragma once
 // A pinhole camera, and the settings that make one: its pose and image size (from the scene
-// description or a --camera file, scene_description.h, or framing the scene).
+// description or a --camera file, scene_description.h, or the default camera, default_camera.h).
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
