@@ -59,7 +59,9 @@ void RenderCommand::run() const {
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
         std::fprintf(stderr, "%s\n%s", describeScene(loaded).c_str(), describeWarnings(loaded).c_str());
-        if (loaded.scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+        if (loaded.scene.lights().litByDefault()) {
+            std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(loaded.scene.lights()).c_str());
+        }
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
                          "note: the scene's point lights need next-event estimation; with --no-nee they are dark\n");

@@ -50,7 +50,9 @@ void ViewCommand::run() const {
     auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
-    if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+    if (scene->scene.lights().litByDefault()) {
+        std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(scene->scene.lights()).c_str());
+    }
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 

@@ -29,6 +29,33 @@ float boundingSphereRadius(const std::vector<glm::vec3>& positions) {
     return positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
 }
 
+// Emitting triangles that make up this share of the scene's area outshine the default sky
+// whatever their radiance.
+constexpr double kEmittingShare = 0.5;
+
+double triangleArea(const MeshData& mesh, size_t triangle) {
+    const auto& t = mesh.triangles[triangle];
+    const glm::dvec3 p0(mesh.positions[t[0]]);
+    return 0.5 * glm::length(glm::cross(glm::dvec3(mesh.positions[t[1]]) - p0,
+                                        glm::dvec3(mesh.positions[t[2]]) - p0));
+}
+
+// The rule of scene_lights.h: whether the mesh's lights (triangleLight: each triangle's, -1 for
+// none) outshine the default sky.
+bool outshineSky(const MeshData& mesh, const std::vector<int32_t>& triangleLight) {
+    if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return true;
+    double area = 0.0;
+    double emitting = 0.0;
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const double a = triangleArea(mesh, i);
+        area += a;
+        if (triangleLight[i] < 0) continue;
+        if (mesh.materials[mesh.triangleMaterials[i]].maxEmission() > kDefaultSkyRadiance) return true;
+        emitting += a;
+    }
+    return emitting > 0.0 && emitting >= kEmittingShare * area;
+}
+
 std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<double> powers;
     powers.reserve(lights.size());
@@ -58,17 +85,29 @@ SceneLights::SceneLights(const MeshData& mesh)
         add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius_));
     }
     sceneOwnLights_ = lights_.size();
+    outshineSky_ = outshineSky(mesh, triangleLight_);
     setEnvironment(mesh.environment);
 }
 
 void SceneLights::setEnvironment(const Environment& given) {
     lights_.resize(sceneOwnLights_);
     atInfinity_.clear();
-    environment_ = resolveEnvironment(given, sceneOwnLights_ > 0);
+    environment_ = resolveEnvironment(given, outshineSky_);
     maxRadianceAtInfinity_ = maxRadiance(environment_);
     litByDefault_ = given.kind == Environment::Kind::Default && environment_.kind != Environment::Kind::None;
     if (auto light = makeEnvironmentLight(environment_, sceneRadius_)) atInfinity_.push_back(add(std::move(light)));
     sampler_ = LightSampler(powersOf(lights_));
+}
+
+std::string_view SceneLights::defaultSkyReason() const {
+    if (!litByDefault_) return {};
+    return sceneOwnLights_ == 0 ? "the scene has no light"
+                                : "the scene's only lights are emitters no brighter than a white sky of radiance 1";
+}
+
+std::string defaultEnvironmentNote(const SceneLights& lights) {
+    return std::string(lights.defaultSkyReason()) +
+           "; lighting it with a uniform white environment (--env none for black)";
 }
 
 uint32_t SceneLights::add(std::unique_ptr<Light> light) {
