@@ -41,6 +41,7 @@ Tonemap RenderCommand::checkOptions(int ranks) const {
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
+    render.backdrop();  // and a bad --background before the scene is read
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
     if (render.noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
     return *tonemapKind;
