@@ -115,5 +115,12 @@ TEST_CASE("tonemap: sRGB encoding and curves at known points") {
     CHECK(applyTonemap(glm::vec3(0.25f), 1.0f, Tonemap::Clamp).x == doctest::Approx(0.5f));
     CHECK(applyTonemap(glm::vec3(-1.0f), 0.0f, Tonemap::Aces).x == 0.0f);
     CHECK(parseTonemap("aces") == Tonemap::Aces);
+    // The default display is the filmic curve: it rolls off the highlights the clamp cuts, and
+    // reaches 1 only near x = 7.24.
+    CHECK(kDefaultTonemap == Tonemap::Aces);
+    CHECK(applyTonemap(glm::vec3(2.0f), 0.0f, Tonemap::Aces).x < applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x);
+    CHECK(applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x < 1.0f);
+    CHECK(applyTonemap(glm::vec3(7.3f), 0.0f, Tonemap::Aces).x == 1.0f);
+    CHECK(applyTonemap(glm::vec3(0.18f), 0.0f, Tonemap::Aces).x == doctest::Approx(0.2669f).epsilon(1e-3));
     CHECK_FALSE(parseTonemap("filmic").has_value());
 }
