@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string background;        // --background (film/backdrop.h's syntax); empty: automatic
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
+    uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);

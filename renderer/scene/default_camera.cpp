@@ -1,7 +1,6 @@
 #include "scene/default_camera.h"
 
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -24,13 +23,9 @@ struct Sphere {
 };
 
 Sphere boundingSphere(const MeshData& mesh) {
-    glm::dvec3 lower(std::numeric_limits<double>::infinity());
-    glm::dvec3 upper = -lower;
-    for (const glm::vec3& p : mesh.positions) {
-        lower = glm::min(lower, glm::dvec3(p));
-        upper = glm::max(upper, glm::dvec3(p));
-    }
-    return {0.5 * (lower + upper), 0.5 * glm::length(upper - lower)};
+    const auto [lower, upper] = worldBounds(mesh);
+    const glm::dvec3 low(lower), high(upper);
+    return {0.5 * (low + high), 0.5 * glm::length(high - low)};
 }
 
 // Twice the triangle's area along its counter-clockwise normal.
@@ -39,9 +34,10 @@ glm::dvec3 areaNormal(const MeshData& mesh, const std::array<uint32_t, 3>& t) {
     return glm::cross(glm::dvec3(mesh.positions[t[1]]) - p0, glm::dvec3(mesh.positions[t[2]]) - p0);
 }
 
-// The unit normal of a flat model's face side, or nullopt when the model is not flat.
-// `threeQuarter` breaks the tie of normals that cancel.
+// The unit normal of a flat model's face side, or nullopt when the model is not flat (or has
+// shared meshes). `threeQuarter` breaks the tie of normals that cancel.
 std::optional<glm::dvec3> flatFace(const MeshData& mesh, const Sphere& sphere, const glm::dvec3& threeQuarter) {
+    if (!mesh.sharedMeshes.empty()) return std::nullopt;
     size_t largest = 0;
     double largestArea = -1.0;
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {

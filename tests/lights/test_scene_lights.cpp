@@ -1,10 +1,13 @@
-// A scene's lights (scene_lights.h): emitting triangles become area lights found by their
-// triangle, point lights are added after them, and the choice among all of them is by power; and
-// the default sky's rule for a scene given no environment.
+// A scene's lights (scene_lights.h), from the light descriptions a scene hands them: emitting
+// triangles become area lights found by their triangle, point lights are added after them, and
+// the choice among all of them is by power; and the default sky's rule for a scene given no
+// environment.
+#include <cmath>
 #include <doctest/doctest.h>
 
 #include <filesystem>
 #include <memory>
+#include <glm/geometric.hpp>
 
 #include "lights/scene_lights.h"
 #include "scene/scene_loader.h"
@@ -14,20 +17,33 @@
 
 using namespace strata;
 
+namespace {
+// The scene's next two triangles, the quad a b c d (counter-clockwise) split as (a b c) (a c d),
+// emitting by `material` when it emits.
+void addQuad(LightDescriptions& lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+             const glm::vec3& d, const Material& material) {
+    const auto first = static_cast<uint32_t>(lights.triangles);
+    lights.triangles += 2;
+    lights.surfaceArea += 0.5 * (glm::length(glm::cross(b - a, c - a)) + glm::length(glm::cross(c - a, d - a)));
+    if (!emitsLight(material)) return;
+    lights.emitters.push_back({first, {a, b, c}, &material});
+    lights.emitters.push_back({first + 1, {a, c, d}, &material});
+}
+}  // namespace
+
 TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") {
-    MeshData mesh;
+    LightDescriptions descriptions;
     Material dark;
     dark.diffuse = glm::vec3(0.5f);
     Material bright;
     bright.emission = glm::vec3(3.0f);
     Material blue;
     blue.emission = glm::vec3(0.0f, 0.0f, 3.0f);  // mean radiance 1
-    mesh.materials = {dark, bright, blue};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // area 1, not emitting
-    test::addQuad(mesh, {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, 1);  // area 2, power 6 pi
-    test::addQuad(mesh, {0, 0, 2}, {0, 1, 2}, {2, 1, 2}, {2, 0, 2}, 2);  // area 2, power 2 pi
-    mesh.pointLights = {PointLight({0, 0, 5}, glm::vec3(0.5f))};    // power 2 pi
-    const SceneLights lights(mesh);
+    addQuad(descriptions, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, dark);    // area 1, not emitting
+    addQuad(descriptions, {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, bright);  // area 2, power 6 pi
+    addQuad(descriptions, {0, 0, 2}, {0, 1, 2}, {2, 1, 2}, {2, 0, 2}, blue);    // area 2, power 2 pi
+    descriptions.pointLights = {PointLight({0, 0, 5}, glm::vec3(0.5f))};        // power 2 pi
+    const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 5);
     CHECK(lights.deltaLights() == 1);
     CHECK(lights.lightOnTriangle(0) == -1);
@@ -48,18 +64,18 @@ TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") 
 TEST_CASE("scene lights: a scene without emitters gets the default sky, or none with --env none") {
     Material dark;
     dark.diffuse = glm::vec3(0.5f);
-    MeshData mesh;
-    mesh.materials = {dark};
-    test::addQuad(mesh, {0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, 0);
-    const SceneLights lit(mesh);
+    LightDescriptions descriptions;
+    addQuad(descriptions, {0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, dark);
+    descriptions.sceneRadius = 2.5f;
+    const SceneLights lit(descriptions);
     REQUIRE(lit.size() == 1);
     CHECK(lit.litByDefault());
     CHECK(lit.lightsAtInfinity() == std::vector<uint32_t>{0});
     CHECK(lit.maxRadianceAtInfinity() == 1.0f);
     // Radiance 1 through the bounding sphere of radius 5/2: pi r^2 4 pi.
     CHECK(lit.light(0).power().x == doctest::Approx(kPi * 6.25f * 4.0f * kPi));
-    mesh.environment.kind = Environment::Kind::None;
-    const SceneLights lights(mesh);
+    descriptions.environment.kind = Environment::Kind::None;
+    const SceneLights lights(descriptions);
     CHECK(lights.size() == 0);
     CHECK(lights.sampler().empty());
     CHECK_FALSE(lights.litByDefault());
@@ -67,21 +83,26 @@ TEST_CASE("scene lights: a scene without emitters gets the default sky, or none 
 
 namespace {
 // A unit square emitting Le = 2: power 2 pi, bounding radius 1/sqrt 2.
-MeshData unitLampQuad() {
+LightDescriptions unitLampQuad(const Material& lamp) {
+    LightDescriptions descriptions;
+    addQuad(descriptions, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, lamp);
+    descriptions.sceneRadius = 0.5f * std::sqrt(2.0f);
+    return descriptions;
+}
+
+Material lampOf(float radiance) {
     Material lamp;
-    lamp.emission = glm::vec3(2.0f);
-    MeshData mesh;
-    mesh.materials = {lamp};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
-    return mesh;
+    lamp.emission = glm::vec3(radiance);
+    return lamp;
 }
 }  // namespace
 
 TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
-    MeshData mesh = unitLampQuad();
-    mesh.environment.kind = Environment::Kind::Uniform;
-    mesh.environment.radiance = glm::vec3(1.0f / kPi);                   // power pi (1/2) 4 pi / pi = 2 pi
-    const SceneLights lights(mesh);
+    const Material lamp = lampOf(2.0f);
+    LightDescriptions descriptions = unitLampQuad(lamp);
+    descriptions.environment.kind = Environment::Kind::Uniform;
+    descriptions.environment.radiance = glm::vec3(1.0f / kPi);  // power pi (1/2) 4 pi / pi = 2 pi
+    const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 3);
     CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
     CHECK_FALSE(lights.litByDefault());
@@ -89,8 +110,8 @@ TEST_CASE("scene lights: an environment comes after the triangles' lights and is
 }
 
 TEST_CASE("scene lights: a new environment replaces the old one's light alone and re-weighs the choice") {
-    MeshData mesh = unitLampQuad();
-    SceneLights lights(mesh);  // no environment given: the lamp keeps the outside black
+    const Material lamp = lampOf(2.0f);
+    SceneLights lights(unitLampQuad(lamp));  // no environment given: the lamp keeps the outside black
     REQUIRE(lights.size() == 2);
     const Light* triangleLight = &lights.light(0);
     CHECK(lights.lightsAtInfinity().empty());
@@ -119,15 +140,18 @@ TEST_CASE("scene lights: a new environment replaces the old one's light alone an
 }
 
 namespace {
-// A grey floor of side 10 under a lamp quad of side 1 emitting `radiance`, as `lamp` gives it.
-MeshData floorUnderLamp(const Material& lamp) {
-    Material floor;
-    floor.diffuse = glm::vec3(0.5f);
-    MeshData mesh;
-    mesh.materials = {floor, lamp};
-    test::addQuad(mesh, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
-    test::addQuad(mesh, {0, 2, 0}, {1, 2, 0}, {1, 2, 1}, {0, 2, 1}, 1);  // faces down
-    return mesh;
+// A grey floor of side 10 under a downward lamp quad of side 1 emitting by `lamp`.
+LightDescriptions floorUnderLamp(const Material& lamp) {
+    static const Material floor = [] {
+        Material m;
+        m.diffuse = glm::vec3(0.5f);
+        return m;
+    }();
+    LightDescriptions descriptions;
+    addQuad(descriptions, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, floor);
+    addQuad(descriptions, {0, 2, 0}, {1, 2, 0}, {1, 2, 1}, {0, 2, 1}, lamp);  // faces down
+    descriptions.sceneRadius = 0.5f * std::sqrt(204.0f);
+    return descriptions;
 }
 
 Material emitting(const glm::vec3& radiance) {
@@ -139,7 +163,8 @@ Material emitting(const glm::vec3& radiance) {
 
 TEST_CASE("scene lights: emitters no brighter than the sky leave the default sky on, brighter ones or many turn it off") {
     // A small emitter of radiance 1 (a glowing label): the sky lights the scene, and the note says why.
-    const SceneLights label(floorUnderLamp(emitting(glm::vec3(1.0f))));
+    const Material labelMaterial = emitting(glm::vec3(1.0f));
+    const SceneLights label(floorUnderLamp(labelMaterial));
     CHECK(label.litByDefault());
     CHECK(label.lightsAtInfinity().size() == 1);
     CHECK(label.lightOnTriangle(2) >= 0);  // the label is a light still
@@ -147,7 +172,8 @@ TEST_CASE("scene lights: emitters no brighter than the sky leave the default sky
           "the scene's only lights are emitters no brighter than a white sky of radiance 1; lighting it "
           "with a uniform white environment (--env none for black)");
     // Brighter than the sky in one channel: a lamp, the outside stays dark.
-    const SceneLights lamp(floorUnderLamp(emitting({0.2f, 1.01f, 0.2f})));
+    const Material lampMaterial = emitting({0.2f, 1.01f, 0.2f});
+    const SceneLights lamp(floorUnderLamp(lampMaterial));
     CHECK_FALSE(lamp.litByDefault());
     CHECK(lamp.lightsAtInfinity().empty());
     CHECK(lamp.defaultSkyReason().empty());
@@ -158,18 +184,20 @@ TEST_CASE("scene lights: emitters no brighter than the sky leave the default sky
     textured.emission = glm::vec3(1.5f);
     CHECK_FALSE(SceneLights(floorUnderLamp(textured)).litByDefault());
     // A point light turns it off, however faint.
-    MeshData pointLit = floorUnderLamp(emitting(glm::vec3(0.5f)));
+    const Material dim = emitting(glm::vec3(0.5f));
+    LightDescriptions pointLit = floorUnderLamp(dim);
     pointLit.pointLights = {PointLight({0, 1, 0}, glm::vec3(1e-3f))};
     CHECK_FALSE(SceneLights(pointLit).litByDefault());
-    // Dim emitters that make up half of the scene's area are its light (a furnace of Le 1).
-    Material dim = emitting(glm::vec3(0.5f));
-    dim.diffuse = glm::vec3(0.5f);
-    CHECK_FALSE(SceneLights(test::furnaceMesh(dim)).litByDefault());
-    MeshData halfLit = floorUnderLamp(dim);
-    test::addQuad(halfLit, {-5, 3, -5}, {5, 3, -5}, {5, 3, 5}, {-5, 3, 5}, 1);  // 101 of 201 emit
+    // Dim emitters that make up half of the scene's area are its light: a ceiling as large as
+    // the floor (101 of 201 square units emit), or a furnace, all of it emitting.
+    LightDescriptions halfLit = floorUnderLamp(dim);
+    addQuad(halfLit, {-5, 3, -5}, {5, 3, -5}, {5, 3, 5}, {-5, 3, 5}, dim);
     CHECK_FALSE(SceneLights(halfLit).litByDefault());
+    LightDescriptions lessThanHalf = floorUnderLamp(dim);
+    addQuad(lessThanHalf, {-5, 3, -5}, {4.8f, 3, -5}, {4.8f, 3, 5}, {-5, 3, 5}, dim);  // 99 of 199
+    CHECK(SceneLights(lessThanHalf).litByDefault());
     // An environment given stands either way.
-    MeshData given = floorUnderLamp(emitting(glm::vec3(1.0f)));
+    LightDescriptions given = floorUnderLamp(labelMaterial);
     given.environment.kind = Environment::Kind::None;
     CHECK_FALSE(SceneLights(given).litByDefault());
 }
