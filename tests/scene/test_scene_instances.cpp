@@ -240,6 +240,7 @@ TEST_CASE("instances: Lambert's square through placed receiver and emitter, tilt
     test::addQuad(mesh, {-0.5f, -0.5f, -1}, {0.5f, -0.5f, -1}, {0.5f, 0.5f, -1}, {-0.5f, 0.5f, -1}, 1);
     mesh.triangleNormals.insert(mesh.triangleNormals.end(), {kNoNormals, kNoNormals});
     mesh.sharedMeshes = {{0, 2, {receiverMap}}, {2, 2, {glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1))}}};
+    mesh.environment.kind = Environment::Kind::None;  // as test::lambertSquareMesh: the square alone
     const Scene scene(std::move(mesh));
     REQUIRE(scene.summary().emitters == 2);
     REQUIRE(scene.summary().placements == 1);
