@@ -1,10 +1,12 @@
 #include "view_command.h"
 
 #include <CLI/App.hpp>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "io/auto_exposure.h"
 #include "util/error.h"
 #include "render_options.h"
 #include "viewer_run.h"
@@ -23,8 +25,8 @@ struct ViewCommand {
     int targetSpp = 0;
     float targetSeconds = 0.0f;
     float scale = 1.0f;
-    float exposure = 0.0f;
-    std::string tonemap = "clamp";
+    std::optional<float> exposure;  // unset: auto (io/auto_exposure.h), or 0 under the clamp
+    std::string tonemap = std::string(tonemapName(kDefaultTonemap));
     bool json = false;
 
     void run() const;
@@ -39,6 +41,11 @@ void ViewCommand::run() const {
     if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (exposure && !(std::abs(*exposure) <= kExposureLimit)) {
+        const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
+        throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
+    }
+    const BackdropSetting backdrop = render.backdrop();
     if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
         throw UsageError("--screenshot: must be a .png file");
     }
@@ -50,7 +57,9 @@ void ViewCommand::run() const {
     auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
-    if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+    if (scene->scene.lights().litByDefault()) {
+        std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(scene->scene.lights()).c_str());
+    }
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
@@ -73,8 +82,10 @@ void ViewCommand::run() const {
     viewerSettings.targetSeconds = targetSeconds;
     viewerSettings.noiseThreshold = static_cast<float>(settings.adaptive.threshold);
     viewerSettings.resolutionScale = scale;
-    viewerSettings.display.exposure = exposure;
+    viewerSettings.display.exposure = exposure.value_or(0.0f);
     viewerSettings.display.tonemap = *tonemapKind;
+    viewerSettings.autoExposure = !exposure && *tonemapKind != Tonemap::Clamp;
+    viewerSettings.backdrop = backdrop;
 
     viewer::ViewRunOptions run;
     run.headless = !headless.empty();
@@ -160,8 +171,12 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--scale", command->scale,
                     "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
-    sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();
+    sub->add_option("--exposure", command->exposure,
+                    "Exposure in stops (default: auto, middle grey 0.18 for the first image's "
+                    "log-average luminance; 0 with --tonemap clamp)");
+    sub->add_option("--tonemap", command->tonemap,
+                    tonemapNames() + " (aces: ACES filmic, Narkowicz's fit; clamp: linear, cut at 1)")
+        ->capture_default_str();
     sub->add_flag("--json", command->json, "Print frame-time p50/p95 and throughput as JSON on stdout");
     sub->callback([command] { command->run(); });
 }

@@ -151,6 +151,9 @@ MeshData lambertSquareMesh(const Material& receiver) {
     addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);  // faces +z
     // Counter-clockwise seen from below: its front faces the receiver.
     addQuad(mesh, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1}, 1);
+    // The square is the only light: of radiance 1, no brighter than the default sky, which would
+    // light the scene otherwise (lights/scene_lights.h).
+    mesh.environment.kind = Environment::Kind::None;
     return mesh;
 }
 

@@ -90,7 +90,8 @@ double furnaceRadiance(double albedo, double emission, int depth);
 
 // Lambert's polygon case (notes section 5.2): a receiver plane z = 0 of `receiver` (large,
 // facing up) under the unit square [-1/2,1/2]^2 at z = 1, emitting 1 downward (and black).
-// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance.
+// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance. No
+// environment.
 MeshData lambertSquareMesh(const Material& receiver);
 inline constexpr double kLambertSquareIrradiance = 0.752274688454;
 // The ray that sees the origin of the receiver, from `from` (above the plane, below the square).

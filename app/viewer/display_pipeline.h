@@ -14,7 +14,7 @@ enum class DisplayView { Colour, RelativeError, SampleCount, AdaptiveMask };
 
 struct DisplaySettings {
     DisplayView view = DisplayView::Colour;
-    Tonemap tonemap = Tonemap::Clamp;
+    Tonemap tonemap = kDefaultTonemap;
     float exposure = 0.0f;     // stops
     bool split = false;        // left of `divider` side 0, right of it side 1
     float divider = 0.5f;      // fraction of the viewport width

@@ -58,7 +58,7 @@ bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
            a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
            a.seed != b.seed ||
            a.threads != b.threads || a.preview != b.preview || a.reference != b.reference ||
-           a.noiseThreshold != b.noiseThreshold;
+           a.noiseThreshold != b.noiseThreshold || a.backdrop != b.backdrop;
 }
 
 RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side) {
@@ -73,6 +73,7 @@ RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side
     settings.niceness = kWorkerNiceness;
     // The preview's single path per pixel is no estimate to judge pixels by.
     settings.adaptive.threshold = config.preview ? 0.0 : config.noiseThreshold;
+    settings.backdrop = config.backdrop;
     return settings;
 }
 

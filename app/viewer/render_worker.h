@@ -49,6 +49,7 @@ struct WorkerConfig {
     // Adaptive sampling (renderer/film/adaptive_sampling.h): a pixel whose relative standard error is
     // at most this receives no more passes; 0: off.
     double noiseThreshold = 0.0;
+    BackdropSetting backdrop;
     // These three never restart accumulation.
     uint32_t targetSpp = 0;      // 0: no limit
     double targetSeconds = 0.0;  // render time (all sides), 0: no limit

@@ -7,6 +7,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "util/error.h"
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
 #include "scene/scene_format.h"
 
@@ -168,6 +169,7 @@ void Viewer::frame(const FrameTarget& target) {
     for (LoadWorker* loader : {&sceneLoader_, &mapLoader_}) {
         if (auto outcome = loader->take()) finishLoad(std::move(*outcome));
     }
+    meterExposure();
 
     const PanelActions actions = panel_.draw(settings_, shown_.get(), scene_->scene, currentLoad());
     // The image has the window right of the panel, and the render its size: nothing of it is
@@ -194,6 +196,7 @@ void Viewer::frame(const FrameTarget& target) {
     config.preview = now - lastMotion_ < kSettleTime;
     config.reference = reference_;
     config.noiseThreshold = settings_.noiseThreshold;
+    config.backdrop = settings_.backdrop;
     config.targetSpp = static_cast<uint32_t>(settings_.targetSpp);
     config.targetSeconds = settings_.targetSeconds;
     config.paused = settings_.paused;
@@ -222,6 +225,17 @@ void Viewer::frame(const FrameTarget& target) {
     drawOverlays();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Viewer::meterExposure() {
+    if (!settings_.autoExposure || metered_ || !shown_ || shown_->preview || shown_->sides.empty()) return;
+    const DisplayImage& image = shown_->sides[0].image;
+    // Whole: every pixel has its first path (a snapshot between bands has rows without).
+    for (size_t p = 3; p < image.meanAndCount.size(); p += 4) {
+        if (image.meanAndCount[p] == 0.0f) return;
+    }
+    settings_.display.exposure = autoExposure(image.radiance());
+    metered_ = true;
 }
 
 void Viewer::updateImage(const DisplaySettings& display) {
@@ -288,13 +302,7 @@ void Viewer::saveExr(const std::filesystem::path& stem) {
     if (!shown_ || shown_->sides.empty()) throw Error("nothing rendered yet");
     std::string written;
     for (size_t side = 0; side < shown_->sides.size(); ++side) {
-        const DisplayImage& display = shown_->sides[side].image;
-        Image image{display.width, display.height, {}};
-        image.pixels.resize(static_cast<size_t>(display.width) * display.height);
-        for (size_t p = 0; p < image.pixels.size(); ++p) {
-            image.pixels[p] = glm::vec3(display.meanAndCount[4 * p], display.meanAndCount[4 * p + 1],
-                                        display.meanAndCount[4 * p + 2]);
-        }
+        const Image image = shown_->sides[side].image.radiance();
         const std::string suffix = shown_->sides.size() == 1 ? "" : (side == 0 ? ".left" : ".right");
         const std::filesystem::path path = stem.string() + suffix + ".exr";
         writeImage(path, image);

@@ -75,6 +75,8 @@ private:
     // display settings change: the display shader runs over the image's pixels, not the window's,
     // and not every frame (llvmpipe's cost per frame is what keeps the UI responsive).
     void updateImage(const DisplaySettings& display);
+    // With settings().autoExposure, the display's exposure from the first whole image shown.
+    void meterExposure();
     void savePng(const std::filesystem::path& path);
     void saveExr(const std::filesystem::path& stem);
 
@@ -92,6 +94,7 @@ private:
     WorkerConfig configured_;
     bool everConfigured_ = false;
     bool relit_ = false;  // since the worker was last configured: restart it
+    bool metered_ = false;  // the exposure has been taken from an image
     bool draggingDivider_ = false;
     Viewport imageArea_;
     std::chrono::steady_clock::time_point lastMotion_{};

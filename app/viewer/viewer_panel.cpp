@@ -58,7 +58,9 @@ void ViewerPanel::setSceneReport(std::string summary, std::string warnings) {
 }
 
 std::string describeEnvironment(const Scene& scene) {
-    if (scene.lights().litByDefault()) return "default white sky: the scene has no light";
+    if (scene.lights().litByDefault()) {
+        return "default white sky: " + std::string(scene.lights().defaultSkyReason());
+    }
     const Environment& environment = scene.lights().environment();
     char text[320];
     switch (environment.kind) {

@@ -48,6 +48,10 @@ struct ViewerSettings {
     float targetSeconds = 0.0f;   // render time; 0: no limit
     bool paused = false;
     DisplaySettings display;
+    // Take display.exposure from the first whole image shown (io/auto_exposure.h).
+    bool autoExposure = false;
+    // What camera rays that miss show (film/backdrop.h).
+    BackdropSetting backdrop;
     // The environment given on the command line (--env options), chosen in the panel or by an
     // .exr opened since: every scene opened takes it in place of its own; Default: each scene
     // keeps its own. The map stays here while another kind is chosen, so going back to it

@@ -117,11 +117,13 @@ glm::vec3 PathIntegrator::radiance(const Ray& ray, const PathSamples& samples, u
 }
 
 void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                              std::span<glm::vec3> radiance, uint64_t& rays) const {
+                              std::span<glm::vec3> radiance, uint64_t& rays,
+                              std::span<bool> onSurface) const {
     for (size_t first = 0; first < cameraRays.size(); first += kBatch) {
         const size_t count = std::min(kBatch, cameraRays.size() - first);
         traceBatch(cameraRays.subspan(first, count), samples.subspan(first, count),
-                   radiance.subspan(first, count), rays);
+                   radiance.subspan(first, count), rays,
+                   onSurface.empty() ? onSurface : onSurface.subspan(first, count));
     }
 }
 
@@ -132,7 +134,8 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
 // bit-identical), most likely from their vec3 returns and the loop state saved around them.
 [[gnu::flatten]] void PathIntegrator::traceBatch(std::span<const Ray> cameraRays,
                                                  std::span<const PathSamples> samples,
-                                                 std::span<glm::vec3> radiance, uint64_t& rays) const {
+                                                 std::span<glm::vec3> radiance, uint64_t& rays,
+                                                 std::span<bool> onSurface) const {
     std::array<PathState, kBatch> paths;
     std::array<size_t, kBatch> live;  // the paths still going, by index into `paths`
     size_t liveCount = cameraRays.size();
@@ -156,6 +159,9 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
         scene_.intersect(std::span(traced.data(), liveCount), std::span(hits.data(), liveCount),
                          bounce == 0 ? Scene::Coherence::Coherent : Scene::Coherence::Incoherent);
         rays += liveCount;
+        if (bounce == 0 && !onSurface.empty()) {
+            for (size_t k = 0; k < liveCount; ++k) onSurface[k] = hits[k].has_value();
+        }
         size_t goingOn = 0;
         size_t shadowCount = 0;
         for (size_t k = 0; k < liveCount; ++k) {

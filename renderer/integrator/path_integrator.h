@@ -66,9 +66,11 @@ public:
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
     // The same for many paths, each camera ray with its path's samples: radiance[i] is exactly
     // what the one-path call gives path i. The paths are traced together, bounce by bounce, so
-    // that Embree takes each bounce's rays, and then its shadow rays, in packets.
+    // that Embree takes each bounce's rays, and then its shadow rays, in packets. When given,
+    // onSurface[i] tells whether camera ray i found a surface (for the backdrop and the
+    // coverage, film/backdrop.h).
     void radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                  std::span<glm::vec3> radiance, uint64_t& rays) const;
+                  std::span<glm::vec3> radiance, uint64_t& rays, std::span<bool> onSurface = {}) const;
 
     const PathIntegratorSettings& settings() const { return settings_; }
 
@@ -97,7 +99,7 @@ private:
 
     // At most kBatch paths, bounce by bounce.
     void traceBatch(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                    std::span<glm::vec3> radiance, uint64_t& rays) const;
+                    std::span<glm::vec3> radiance, uint64_t& rays, std::span<bool> onSurface) const;
     // One bounce of one path that has traced its ray to `hit`: adds the emission found there to
     // `radiance`, asks for a light sample's shadow ray (next-event estimation), and turns the
     // path to its next ray. False when the path ends here.

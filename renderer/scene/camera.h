@@ -1,7 +1,7 @@
 #pragma once
 // A pinhole or orthographic camera, and the settings that make one: its pose and image size (from
-// the scene description or a --camera file, scene_description.h, a glTF file's camera, or framing
-// the scene).
+// the scene description or a --camera file, scene_description.h, a glTF file's camera, or the
+// default camera, default_camera.h).
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 

@@ -237,6 +237,7 @@ LightDescriptions lightDescriptions(const MeshData& mesh, const std::pair<glm::v
     lights.environment = mesh.environment;
     const auto& [lower, upper] = bounds;
     lights.sceneRadius = mesh.positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
+    lights.surfaceArea = worldArea(mesh);
     return lights;
 }
 

@@ -10,9 +10,11 @@
 namespace strata {
 namespace {
 
-// An OBJ carries no camera.
+// An OBJ carries no camera, and states no axes: its orientation is read from the model.
 ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
-    return {parseObjScene(bundle, report, budget), std::nullopt};
+    ParsedScene parsed{parseObjScene(bundle, report, budget), std::nullopt};
+    parsed.orientation = objOrientation(parsed.mesh);
+    return parsed;
 }
 
 // Every format Strata reads. A new one is its loader and one line here.

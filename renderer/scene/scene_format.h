@@ -13,6 +13,7 @@
 
 #include "scene/camera.h"
 #include "scene/mesh.h"
+#include "scene/model_orientation.h"
 
 namespace strata {
 
@@ -52,10 +53,12 @@ struct TriangleCount {
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget);
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
-// of the scene's own camera, which the scene takes when no description or --camera file gives one.
+// of the scene's own camera, which the scene takes when no description or --camera file gives one;
+// and the model's orientation, which the default camera takes otherwise (default_camera.h).
 struct ParsedScene {
     MeshData mesh;
     std::optional<CameraPose> camera;
+    ModelOrientation orientation = kGltfOrientation;
 };
 
 struct SceneFile {

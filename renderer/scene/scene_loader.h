@@ -36,7 +36,7 @@ enum class ParseStage { Parsing, Building };
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
-// own (glTF), else framing the scene; `traversal` picks Embree's triangle test
+// own (glTF), else the default camera (default_camera.h); `traversal` picks Embree's triangle test
 // (traversal_precision.h). Throws strata::Error naming the bad file, or the budget the scene
 // exceeds (scene_format.h), before its geometry is read. `onStage`, when given, is called as each
 // stage begins; an exception it throws ends the parse there (how the viewer cancels a load

@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <thread>
 #include <vector>
 #include <imgui.h>
 
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
 #include "test_support.h"
 #include "viewer_run.h"
@@ -371,6 +373,7 @@ TEST_CASE("a noise threshold stops every pixel, then rendering, and the mask vie
     ViewerSettings settings = smallSingleView();
     settings.single = {SamplerKind::Strata24, 2};
     settings.noiseThreshold = 0.05f;
+    settings.display.tonemap = Tonemap::Clamp;
     Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
     const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
     REQUIRE(done.sides.size() == 1);
@@ -718,4 +721,29 @@ TEST_CASE("the loader's note has its line in the load summary, above the control
     REQUIRE(controls.count("scene note") == 1);
     CHECK(controls.at("scene note").min.y > controls.at("open scene...").max.y);
     CHECK(controls.at("scene note").max.y < controls.at("change environment").min.y);
+
+TEST_CASE("the display's exposure comes from the first whole image and then stays, and the backdrop reaches the worker") {
+    ViewerSettings settings = smallSingleView();
+    settings.autoExposure = true;
+    settings.backdrop = {BackdropSetting::Kind::Colour, glm::vec3(0.5f)};
+    settings.targetSpp = 48;
+    {
+        Harness h(settings);
+        CHECK(h.viewer.workerConfig().backdrop == settings.backdrop);
+        const uint64_t generation =
+            h.waitFor([](const WorkerSnapshot& s) { return !s.preview && s.spp >= 1; }).generation;
+        const float metered = h.viewer.settings().display.exposure;
+        CHECK(metered != 0.0f);
+        // Taken from a one-path image, within a quarter stop of the exposure of the finished one.
+        const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 48; });
+        CHECK(done.generation == generation);
+        CHECK(std::abs(metered - autoExposure(done.sides.at(0).image.radiance())) < 0.25f);
+        CHECK(h.viewer.settings().display.exposure == metered);
+    }
+    // Given (not automatic), the exposure is left alone.
+    settings.autoExposure = false;
+    settings.display.exposure = 1.5f;
+    Harness fixed(settings);
+    fixed.waitFor([](const WorkerSnapshot& s) { return !s.preview && s.spp >= 1; });
+    CHECK(fixed.viewer.settings().display.exposure == 1.5f);
 }
