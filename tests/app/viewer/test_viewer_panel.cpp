@@ -721,6 +721,7 @@ TEST_CASE("the loader's note has its line in the load summary, above the control
     REQUIRE(controls.count("scene note") == 1);
     CHECK(controls.at("scene note").min.y > controls.at("open scene...").max.y);
     CHECK(controls.at("scene note").max.y < controls.at("change environment").min.y);
+}
 
 TEST_CASE("the display's exposure comes from the first whole image and then stays, and the backdrop reaches the worker") {
     ViewerSettings settings = smallSingleView();
