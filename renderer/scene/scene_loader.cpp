@@ -8,6 +8,7 @@
 
 #include "scene/scene_description.h"
 #include "util/error.h"
+#include "util/printable.h"
 #include "util/text_file.h"
 
 namespace strata {
@@ -50,34 +51,38 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
 }  // namespace
 
 SceneBundle readSceneBundle(const std::filesystem::path& path,
-                            const std::optional<std::filesystem::path>& cameraPath) {
-    if (!std::filesystem::is_regular_file(path)) {
-        throw Error(path.string() + ": no such scene file");
+                            const std::optional<std::filesystem::path>& cameraPath,
+                            const SceneReadOptions& options) {
+    if (fileKindOf(path) != FileKind::Regular) {
+        throw Error(printable(path.string()) + ": no such scene file");
     }
-    SceneBundle bundle{path, sceneFormatOf(path).read(path), std::nullopt, std::nullopt};
+    SceneFolder folder(path, options);
+    SceneBundle bundle{path, sceneFormatOf(path).read(path, folder), std::nullopt, std::nullopt};
     const auto sidecar = std::filesystem::path(path).replace_extension(".json");
     // --camera naming the description itself: read once, or its point lights would count twice.
     const bool cameraIsSidecar = cameraPath && sameFile(*cameraPath, sidecar);
-    if (std::filesystem::is_regular_file(sidecar)) {
-        SceneFile description{sidecar.filename().string(), readTextFile(sidecar, "scene description")};
+    const std::string mainName = printable(path.string());
+    if (auto bytes = folder.read(sidecar.filename().string(), mainName + ": scene description")) {
+        SceneFile description{sidecar.filename().string(), std::move(*bytes)};
         const std::string name = bundle.pathOf(description.name);
         if (cameraIsSidecar) parseCameraFile(description.bytes, name);  // its camera is required
         for (const std::string& file : parseSceneDescription(description.bytes, name).files) {
             if (bundle.find(file)) continue;
-            bundle.files.push_back({file, readTextFile(path.parent_path() / file,
-                                                       "file (named by " + name + ")")});
+            bundle.files.push_back({file, folder.require(file, name + ": \"environment\" file")});
         }
         bundle.description = std::move(description);
     }
     if (cameraPath && !cameraIsSidecar) {
         bundle.camera = SceneFile{cameraPath->string(), readTextFile(*cameraPath, "camera file")};
     }
+    bundle.outsideNotes = folder.outsideNotes();
     return bundle;
 }
 
 LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
     LoadReport report;
     ParsedScene parsed = parseSceneFile(bundle, &report);
+    report.warnings.insert(report.warnings.end(), bundle.outsideNotes.begin(), bundle.outsideNotes.end());
     MeshData& mesh = parsed.mesh;
     if (mesh.triangles.empty()) {
         throw Error(bundle.path.string() + ": the scene has no usable triangles");

@@ -22,11 +22,14 @@ struct LoadedScene {
 
 // Reads the scene's files: the scene file `path` and those it refers to, the scene description
 // NAME.json beside it when there is one (and the files it refers to), and the camera file when
-// given. Throws strata::Error naming a missing or malformed file; for a file that is not there,
-// "PATH: no such scene file", else for an extension no format has,
+// given; the files the scene refers to (the description among them) only inside the scene file's
+// folder unless `options` allow others (scene_folder.h). Throws strata::Error naming a missing or
+// malformed file or a refused reference; for a scene file that is not there (or not a regular
+// file), "PATH: no such scene file", else for an extension no format has,
 // "PATH: unknown scene format '.EXT' (known: ...)", before any file is read.
 SceneBundle readSceneBundle(const std::filesystem::path& path,
-                            const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
+                            const std::optional<std::filesystem::path>& cameraPath = std::nullopt,
+                            const SceneReadOptions& options = {});
 
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
