@@ -203,13 +203,7 @@ private:
             }
             std::vector<uint32_t> vertices;
             if (primitive.indices >= 0) {
-                for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
-                    if (index >= static_cast<double>(vertexCount)) {
-                        fail(where + ": index " + std::to_string(static_cast<uint64_t>(index)) +
-                             " out of range (" + std::to_string(vertexCount) + " vertices)");
-                    }
-                    vertices.push_back(static_cast<uint32_t>(index));
-                }
+                vertices = accessorIndices(gltf_, primitive.indices, vertexCount, where);
             } else {
                 for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
             }

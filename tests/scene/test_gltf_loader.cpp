@@ -444,7 +444,8 @@ TEST_CASE("gltf: reading gathers the buffers and images a .gltf names, parsing u
     std::ofstream(dir / "s.gltf") << doc.dump();
     std::ofstream(dir / "data files" / "tri.bin", std::ios::binary) << model.bin;
     std::ofstream(dir / "tex.png") << "not decoded";
-    const std::vector<SceneFile> files = readGltfScene(dir / "s.gltf");
+    SceneFolder folder(dir / "s.gltf", {});
+    const std::vector<SceneFile> files = readGltfScene(dir / "s.gltf", folder);
     REQUIRE(files.size() == 3);
     CHECK(files[0].name == "s.gltf");
     CHECK(files[1].name == "data files/tri.bin");
@@ -454,7 +455,7 @@ TEST_CASE("gltf: reading gathers the buffers and images a .gltf names, parsing u
     const SceneBundle elsewhere{"other/host/s.gltf", files, std::nullopt, std::nullopt};
     std::filesystem::remove_all(dir / "data files");
     CHECK(parseGltfScene(elsewhere).mesh.triangles.size() == 1);
-    CHECK_THROWS_WITH_AS(readGltfScene(dir / "s.gltf"),
+    CHECK_THROWS_WITH_AS(readGltfScene(dir / "s.gltf", folder),
                          ((dir / "s.gltf").string() + ": File not found : data files/tri.bin").c_str(), Error);
 }
 
@@ -473,7 +474,7 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
                                    "Strata renders triangles, strips and fans");
     Model outOfRange = model;
     outOfRange.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
-    CHECK(errorOf(outOfRange.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: index 7 out of range (3 vertices)");
+    CHECK(errorOf(outOfRange.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: indices accessor 1: element 2 of 3 refers past the 3 vertices");
     Model shortView = model;
     shortView.doc["accessors"][0]["count"] = 4;
     shortView.meshNode({{"attributes", {{"POSITION", positions}}}});
@@ -528,7 +529,7 @@ TEST_CASE("gltf: assimp's glTF 2.0 test models load or fail with one line naming
     };
     const auto path = [&](const std::string& file) { return (root / file).string(); };
     CHECK(errorOfFile("IndexOutOfRange/IndexOutOfRange.gltf") ==
-          path("IndexOutOfRange/IndexOutOfRange.gltf") + ": mesh 'Mesh' (0) primitive 0: index 255 out of range (24 vertices)");
+          path("IndexOutOfRange/IndexOutOfRange.gltf") + ": mesh 'Mesh' (0) primitive 0: indices accessor 0: element 0 of 36 refers past the 24 vertices");
     CHECK(errorOfFile("MissingBin/BoxTextured.gltf") == path("MissingBin/BoxTextured.gltf") + ": File not found : BoxTextured0.bin");
     CHECK(errorOfFile("RecursiveNodes/RecursiveNodes.gltf") ==
           path("RecursiveNodes/RecursiveNodes.gltf") + ": node 0 is reached twice: the node hierarchy is not a tree");
