@@ -79,13 +79,14 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
-    LoadReport report;
-    ParsedScene parsed = parseSceneFile(bundle, &report);
+SceneContents parseSceneContents(const SceneBundle& bundle) {
+    SceneContents contents;
+    LoadReport& report = contents.report;
+    contents.parsed = parseSceneFile(bundle, &report);
     report.warnings.insert(report.warnings.end(), bundle.outsideNotes.begin(), bundle.outsideNotes.end());
-    MeshData& mesh = parsed.mesh;
+    MeshData& mesh = contents.parsed.mesh;
     if (mesh.triangles.empty()) {
-        throw Error(bundle.path.string() + ": the scene has no usable triangles");
+        throw Error(printable(bundle.path.string()) + ": the scene has no usable triangles");
     }
     SceneDescription description;
     if (bundle.description) {
@@ -95,18 +96,24 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
     mesh.environment = describedEnvironment(description, bundle, report);
-    CameraSettings settings = description.camera;
-    bool posed = description.hasPose;
+    contents.settings = description.camera;
+    contents.posed = description.hasPose;
     if (bundle.camera) {
         const SceneDescription cameraFile = parseCameraFile(bundle.camera->bytes, bundle.camera->name);
-        settings = cameraFile.camera;
-        posed = true;
+        contents.settings = cameraFile.camera;
+        contents.posed = true;
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
-    Scene scene(std::move(mesh), traversal);
-    if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
-    return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
+    return contents;
+}
+
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
+    SceneContents contents = parseSceneContents(bundle);
+    Scene scene(std::move(contents.parsed.mesh), traversal);
+    CameraSettings& settings = contents.settings;
+    if (!contents.posed) settings.pose = contents.parsed.camera ? *contents.parsed.camera : framingPose(scene);
+    return LoadedScene{std::move(scene), settings, std::move(contents.report), std::move(bundle)};
 }
 
 LoadedScene loadScene(const std::filesystem::path& path,

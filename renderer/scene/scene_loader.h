@@ -31,6 +31,19 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath = std::nullopt,
                             const SceneReadOptions& options = {});
 
+// What parseScene builds the scene from, all of parsing without building the scene's
+// acceleration structure (the loader fuzzer runs this): the mesh with the lights of the
+// description and of the camera file's "point_lights" and the description's environment, the
+// camera settings of the camera file, else the description (`posed` when they give the pose), the
+// scene file's own camera, and the load report. Throws strata::Error naming the bad file.
+struct SceneContents {
+    ParsedScene parsed;
+    CameraSettings settings;
+    bool posed = false;
+    LoadReport report;
+};
+SceneContents parseSceneContents(const SceneBundle& bundle);
+
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
