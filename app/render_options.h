@@ -33,6 +33,7 @@ struct RenderOptions {
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
+    bool allowOutsideFiles = false;  // read references outside the scene's folder (scene_folder.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);
@@ -42,7 +43,7 @@ struct RenderOptions {
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const Scene& scene) const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
-    // file) without parsing them.
+    // file) without parsing them, confined to the scene's folder unless allowOutsideFiles.
     SceneBundle readSceneBundle() const;
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
@@ -52,6 +53,8 @@ struct RenderOptions {
     LoadedScene parseScene(SceneBundle files, const Environment& environment) const;
     // Loads the scene and camera: parseScene(readSceneBundle(), environment()).
     LoadedScene loadScene() const;
+    // What reading the scene may read (allowOutsideFiles).
+    SceneReadOptions readOptions() const { return {allowOutsideFiles}; }
     // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;
 };

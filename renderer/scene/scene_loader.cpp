@@ -117,8 +117,8 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
 }
 
 LoadedScene loadScene(const std::filesystem::path& path,
-                      const std::optional<std::filesystem::path>& cameraPath) {
-    return parseScene(readSceneBundle(path, cameraPath));
+                      const std::optional<std::filesystem::path>& cameraPath, const SceneReadOptions& options) {
+    return parseScene(readSceneBundle(path, cameraPath, options));
 }
 
 std::string describeScene(const LoadedScene& loaded) {

@@ -54,7 +54,8 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Auto
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,
-                      const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
+                      const std::optional<std::filesystem::path>& cameraPath = std::nullopt,
+                      const SceneReadOptions& options = {});
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
 // the triangle test and the rounding gap share that chose it, the extent (the bounding box's

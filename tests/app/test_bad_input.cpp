@@ -99,6 +99,14 @@ const std::vector<BadInputCase> kCliCases = {
      "s.gltf: mesh '' (0) primitive 0: indices accessor 1: element 2 of 3 refers past the 3 vertices"},
     {"glTF buffer file missing", {{"s.gltf", gltfTriangle("", "", R"("gone.bin")")}}, "render {dir}/s.gltf",
      "s.gltf: File not found : gone.bin"},
+    {"glTF emissiveStrength beyond float range",
+     {{"s.gltf", gltfTriangle(R"(,"material":0)", R"(,"materials":[{"emissiveFactor":[1,1,1],"extensions":)"
+                                                R"({"KHR_materials_emissive_strength":{"emissiveStrength":1e300}}}])")}},
+     "render {dir}/s.gltf", "s.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range"},
+    {"glTF light intensity beyond float range",
+     {{"s.gltf", R"({"asset":{"version":"2.0"},"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point",)"
+                 R"("intensity":1e300}]}},"nodes":[{"extensions":{"KHR_lights_punctual":{"light":0}}}],"scenes":[{"nodes":[0]}]})"}},
+     "render {dir}/s.gltf", "s.gltf: light '' (0): intensity x color is beyond float range"},
     {"glTF node hierarchy with a cycle",
      {{"s.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}]})"}},
      "render {dir}/s.gltf", "s.gltf: node 0 is reached twice: the node hierarchy is not a tree"},
@@ -113,6 +121,17 @@ const std::vector<BadInputCase> kCliCases = {
      "material 'white' has a negative or non-finite Kd, Ke, Ks or Pr"},
     {"MTL Ke is Inf", {{"s.mtl", "newmtl white\nKe inf 1 1\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'inf' is not a finite number"},
+    // Files a scene refers to outside its folder (scene_folder.h)
+    {"MTL texture outside the scene's folder", {{"s.mtl", kMtl + "map_Ke ../glow.png\n"}}, "render {dir}/s.obj",
+     "s.mtl:4: map_Ke '../glow.png' resolves outside the model's folder"},
+    {"OBJ mtllib outside the scene's folder", {{"s.obj", "mtllib /etc/x.mtl\n" + kObj}}, "render {dir}/s.obj",
+     "s.obj:1: mtllib '/etc/x.mtl' resolves outside the model's folder"},
+    {"glTF buffer outside the scene's folder", {{"s.gltf", gltfTriangle("", "", R"("/etc/passwd")")}},
+     "render {dir}/s.gltf", "s.gltf: URI '/etc/passwd' resolves outside the model's folder"},
+    {"scene JSON environment outside the scene's folder", {{"s.json", R"({"environment":{"file":"/dev/zero"}})"}},
+     "render {dir}/s.obj", "s.json: \"environment\" file '/dev/zero' resolves outside the model's folder"},
+    {"scene JSON environment not a regular file", {{"s.json", R"({"environment":{"file":"."}})"}},
+     "render {dir}/s.obj", "s.json: \"environment\" file '.' is not a regular file"},
     // Scene description JSON (s.json beside s.obj)
     {"scene JSON syntax error", {{"s.json", "{\n\"position\": [0,0,\n}"}}, "render {dir}/s.obj",
      "s.json: invalid JSON: parse error at line 3"},
