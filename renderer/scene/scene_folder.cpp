@@ -26,6 +26,8 @@ SceneFolder::SceneFolder(const std::filesystem::path& mainFile, const SceneReadO
 
 std::optional<std::string> SceneFolder::read(const std::string& reference, const std::string& where) {
     const std::string named = where + " " + quote(reference);
+    // The system would read the name only up to the NUL: another file than the one checked.
+    if (reference.find('\0') != std::string::npos) throw Error(named + " holds a NUL byte, which no file name does");
     // The path read is the resolved one: what was checked is what is opened.
     std::error_code error;
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(folder_ / reference, error);
