@@ -57,7 +57,8 @@ void Viewer::openScene(const std::filesystem::path& path) {
         return;
     }
     try {
-        LoadedScene loaded = parseScene(readSceneBundle(path, std::nullopt, settings_.files), settings_.traversal);
+        LoadedScene loaded =
+            parseScene(readSceneBundle(path, std::nullopt, settings_.files), settings_.traversal);
         if (settings_.environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(settings_.environment);
         scene_ = std::make_shared<LoadedScene>(std::move(loaded));
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());

@@ -133,14 +133,15 @@ std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse
     return values;
 }
 
-std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount, const std::string& where) {
+std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount,
+                                      const std::string& where) {
     const std::vector<double> values = accessorValues(gltf, index, AccessorUse::Index, where);
     std::vector<uint32_t> indices(values.size());
     for (size_t i = 0; i < values.size(); ++i) {
         if (!(values[i] < static_cast<double>(vertexCount))) {
-            gltf.fail(where + ": indices accessor " + std::to_string(index) + ": element " + std::to_string(i) +
-                      " of " + std::to_string(values.size()) + " refers past the " + std::to_string(vertexCount) +
-                      " vertices");
+            gltf.fail(where + ": indices accessor " + std::to_string(index) + ": element " +
+                      std::to_string(i) + " of " + std::to_string(values.size()) + " refers past the " +
+                      std::to_string(vertexCount) + " vertices");
         }
         indices[i] = static_cast<uint32_t>(values[i]);
     }

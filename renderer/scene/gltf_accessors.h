@@ -20,6 +20,7 @@ std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse
 // A primitive's indices (accessor `index`) into its `vertexCount` vertices; one out of range is a
 // strata::Error naming `where`, the accessor and the index's position, never its value: that is
 // bytes of a buffer file, which may be any file (one read with --allow-outside-files, say).
-std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount, const std::string& where);
+std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount,
+                                      const std::string& where);
 
 }  // namespace strata

@@ -41,7 +41,8 @@ struct FolderFiles {
     std::optional<Error> refusal;
 
     const SceneFile* find(const std::string& name) const {
-        const auto it = std::find_if(read.begin(), read.end(), [&](const SceneFile& file) { return file.name == name; });
+        const auto it =
+            std::find_if(read.begin(), read.end(), [&](const SceneFile& file) { return file.name == name; });
         return it == read.end() ? nullptr : &*it;
     }
 };
@@ -63,7 +64,8 @@ bool folderFileExists(const std::string& name, void* user) {
     }
 }
 
-bool readFolderFile(std::vector<unsigned char>* out, std::string* /*err*/, const std::string& name, void* user) {
+bool readFolderFile(std::vector<unsigned char>* out, std::string* /*err*/, const std::string& name,
+                    void* user) {
     const SceneFile* file = static_cast<FolderFiles*>(user)->find(name);
     if (!file) return false;
     out->assign(file->bytes.begin(), file->bytes.end());
@@ -104,7 +106,9 @@ std::string firstLine(const std::string& text) {
 }
 
 uint32_t littleEndian32(std::string_view bytes, size_t offset) {
-    const auto byte = [&](size_t k) { return static_cast<uint32_t>(static_cast<unsigned char>(bytes[offset + k])); };
+    const auto byte = [&](size_t k) {
+        return static_cast<uint32_t>(static_cast<unsigned char>(bytes[offset + k]));
+    };
     return byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
 }
 
@@ -115,7 +119,9 @@ uint32_t littleEndian32(std::string_view bytes, size_t offset) {
 void checkBinaryLayout(std::string_view bytes, const std::string& path) {
     const auto fail = [&](const std::string& what) { throw Error(path + ": " + what); };
     if (bytes.size() < 12) fail("shorter than a binary glTF's 12-byte header");
-    if (littleEndian32(bytes, 4) != 2) fail("binary glTF version " + std::to_string(littleEndian32(bytes, 4)) + "; Strata reads version 2");
+    if (const uint32_t version = littleEndian32(bytes, 4); version != 2) {
+        fail("binary glTF version " + std::to_string(version) + "; Strata reads version 2");
+    }
     const size_t length = littleEndian32(bytes, 8);
     if (length > bytes.size()) {
         fail("the binary glTF header gives a length of " + std::to_string(length) + " bytes, the file has " +
@@ -154,7 +160,8 @@ void checkRequiredExtensions(std::string_view json, const std::string& path) {
         const auto name = extension.get<std::string>();
         if (std::find(kImplementedExtensions.begin(), kImplementedExtensions.end(), name) ==
             kImplementedExtensions.end()) {
-            throw Error(path + ": requires extension " + printable(name) + ", which Strata does not implement");
+            throw Error(path + ": requires extension " + printable(name) +
+                        ", which Strata does not implement");
         }
     }
 }
@@ -200,7 +207,8 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path, SceneFol
     }
     // Refused, the file was missing to tinygltf, which may have gone on or failed for it.
     if (uris.refusal) throw *uris.refusal;
-    files.insert(files.end(), std::make_move_iterator(uris.read.begin()), std::make_move_iterator(uris.read.end()));
+    files.insert(files.end(), std::make_move_iterator(uris.read.begin()),
+                 std::make_move_iterator(uris.read.end()));
     return files;
 }
 

@@ -13,7 +13,9 @@
 namespace strata {
 namespace {
 
-bool isFiniteFloat(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool isFiniteFloat(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 Material metallicRoughnessMaterial(const std::string& name, const glm::vec3& baseColor, float metallic,
                                    float roughness, const glm::vec3& emission) {
@@ -88,10 +90,13 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     const glm::vec3 baseColor(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
     const auto metallic = static_cast<float>(pbr.metallicFactor);
     // Checked as the float it becomes: a finite double such as 1e300 is infinite as a float.
-    const glm::vec3 emission(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]));
-    if (!isFiniteFloat(emission)) gltf.fail(name + ": emissiveStrength x emissiveFactor is beyond float range");
-    Material material =
-        metallicRoughnessMaterial(m.name, baseColor, metallic, static_cast<float>(pbr.roughnessFactor), emission);
+    const glm::vec3 emission(strength *
+                             glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]));
+    if (!isFiniteFloat(emission)) {
+        gltf.fail(name + ": emissiveStrength x emissiveFactor is beyond float range");
+    }
+    Material material = metallicRoughnessMaterial(m.name, baseColor, metallic,
+                                                  static_cast<float>(pbr.roughnessFactor), emission);
 
     MaterialTextures& maps = material.textures;
     maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,

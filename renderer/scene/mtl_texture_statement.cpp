@@ -60,7 +60,8 @@ std::optional<MtlTextureStatement> parseMtlTextureStatement(const std::vector<st
         if (i + arguments > words.size()) return std::nullopt;
         if (option == "-bm") {
             // from_chars reads "nan" and "inf"; a multiplier must be a finite number.
-            if (const auto value = number(words[i]); value && std::isfinite(*value)) statement.bumpMultiplier = *value;
+            const auto value = number(words[i]);
+            if (value && std::isfinite(*value)) statement.bumpMultiplier = *value;
         }
         if (option == "-imfchan" && words[i].size() == 1) statement.channel = words[i].front();
         i += arguments;

@@ -20,14 +20,17 @@ bool isInside(const std::filesystem::path& path, const std::filesystem::path& fo
 SceneFolder::SceneFolder(const std::filesystem::path& mainFile, const SceneReadOptions& options)
     : options_(options) {
     std::error_code error;
-    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(mainFile.parent_path(), error), error);
+    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(mainFile.parent_path(), error),
+                                                error);
     if (error) throw Error(printable(mainFile.string()) + ": cannot resolve the scene's folder");
 }
 
 std::optional<std::string> SceneFolder::read(const std::string& reference, const std::string& where) {
     const std::string named = where + " " + quote(reference);
     // The system would read the name only up to the NUL: another file than the one checked.
-    if (reference.find('\0') != std::string::npos) throw Error(named + " holds a NUL byte, which no file name does");
+    if (reference.find('\0') != std::string::npos) {
+        throw Error(named + " holds a NUL byte, which no file name does");
+    }
     // The path read is the resolved one: what was checked is what is opened.
     std::error_code error;
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(folder_ / reference, error);

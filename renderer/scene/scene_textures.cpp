@@ -11,7 +11,9 @@ namespace strata {
 namespace {
 
 // OpenEXR's magic number; only EXR texels can be other than finite and non-negative.
-bool isExr(std::string_view bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0; }
+bool isExr(std::string_view bytes) {
+    return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0;
+}
 
 // Which components of Texture::texel hold a texture's `channels` channels (texture.h).
 constexpr std::array<std::array<int, 4>, 5> kChannelComponents{{{}, {0}, {0, 3}, {0, 1, 2}, {0, 1, 2, 3}}};
@@ -42,15 +44,17 @@ FiniteTexture finiteNonNegative(const Texture& texture) {
     }
     const size_t values = texels.size();
     if (changed == 0) return {nullptr, 0, values};
-    return {std::make_shared<const Texture>(texture.width(), texture.height(), texture.channels(), std::move(texels)),
-            changed, values};
+    auto finite = std::make_shared<const Texture>(texture.width(), texture.height(), texture.channels(),
+                                                  std::move(texels));
+    return {std::move(finite), changed, values};
 }
 
 std::shared_ptr<const Texture> SceneTextures::file(const std::string& name, TextureEncoding encoding,
                                                    const std::string& where) {
     const SceneFile* found = bundle_.find(name);
     if (!found) {
-        const std::string line = where + ": texture file " + quote(name) + " is missing; using the factor alone";
+        const std::string line =
+            where + ": texture file " + quote(name) + " is missing; using the factor alone";
         if (std::find(warnings_.begin(), warnings_.end(), line) == warnings_.end()) warnings_.push_back(line);
         return nullptr;
     }

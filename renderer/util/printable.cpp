@@ -60,7 +60,8 @@ std::string printable(std::string_view text, size_t longest) {
     size_t i = 0;
     while (i < text.size() && i < longest) {
         const auto c = static_cast<unsigned char>(text[i]);
-        if (text.compare(i, 5, "data:") == 0 && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])))) {
+        const bool wordStart = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
+        if (wordStart && text.compare(i, 5, "data:") == 0) {
             i = appendDataUri(text, i, out);
             continue;
         }

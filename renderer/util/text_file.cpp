@@ -35,7 +35,8 @@ FileKind fileKindOf(const std::filesystem::path& path, FileIdentity* identity) {
     return FileKind::Regular;
 }
 
-FileKind readRegularFile(const std::filesystem::path& path, std::string& bytes, const FileIdentity* expected) {
+FileKind readRegularFile(const std::filesystem::path& path, std::string& bytes,
+                         const FileIdentity* expected) {
     // Not opened unless it is a regular file: opening some devices does something.
     FileIdentity seen;
     const FileKind kind = fileKindOf(path, &seen);
@@ -68,7 +69,8 @@ std::string readTextFile(const std::filesystem::path& path, const std::string& w
     std::string bytes;
     switch (readRegularFile(path, bytes)) {
         case FileKind::Regular: return bytes;
-        case FileKind::NotRegular: throw Error(printable(path.string()) + ": " + what + " is not a regular file");
+        case FileKind::NotRegular:
+            throw Error(printable(path.string()) + ": " + what + " is not a regular file");
         default: throw Error(printable(path.string()) + ": cannot open " + what);
     }
 }

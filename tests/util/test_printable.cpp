@@ -13,8 +13,10 @@ TEST_CASE("printable: control characters, C1 controls and bytes that are not UTF
     CHECK(printable(std::string("\x1b[31mred\x7f\0", 10)) == "\\x1b[31mred\\x7f\\x00");
     // UTF-8 passes, but not U+009B (CSI, a C1 control some terminals obey), nor a lone or
     // overlong byte, nor a surrogate.
-    CHECK(printable("caf\xc3\xa9 \xe6\x9d\xb1 \xf0\x9f\x8e\xa8") == "caf\xc3\xa9 \xe6\x9d\xb1 \xf0\x9f\x8e\xa8");
-    CHECK(printable("\xc2\x9b" "2J") == "\\u009b2J");
+    CHECK(printable("caf\xc3\xa9 \xe6\x9d\xb1 \xf0\x9f\x8e\xa8") ==
+          "caf\xc3\xa9 \xe6\x9d\xb1 \xf0\x9f\x8e\xa8");
+    CHECK(printable("\xc2\x9b"
+                    "2J") == "\\u009b2J");
     CHECK(printable("\xff\xc0\xaf\xed\xa0\x80") == "\\xff\\xc0\\xaf\\xed\\xa0\\x80");
     CHECK(printable("\xe6\x9d") == "\\xe6\\x9d");
     CHECK(quote("it's\n") == "'it's\\n'");

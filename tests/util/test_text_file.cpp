@@ -12,7 +12,7 @@
 
 using namespace strata;
 
-TEST_CASE("text file: a regular file is read whole; a FIFO, a device or a folder is not opened, and does not block") {
+TEST_CASE("text file: regular files are read whole; a FIFO, a device or a folder is not opened nor waited on") {
     const test::ScratchDir dir = test::scratchDir("text-file");
     std::ofstream(dir / "a.txt", std::ios::binary) << std::string("x\0y", 3);
     std::string bytes;
@@ -25,10 +25,10 @@ TEST_CASE("text file: a regular file is read whole; a FIFO, a device or a folder
     // A FIFO without a writer would block an ordinary open forever.
     REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
     CHECK(readRegularFile(dir / "fifo", bytes) == FileKind::NotRegular);
-    CHECK_THROWS_WITH_AS(readTextFile(dir / "fifo", "scene"), ((dir / "fifo").string() + ": scene is not a regular file").c_str(),
-                         Error);
-    CHECK_THROWS_WITH_AS(readTextFile(dir / "absent", "scene"), ((dir / "absent").string() + ": cannot open scene").c_str(),
-                         Error);
+    CHECK_THROWS_WITH_AS(readTextFile(dir / "fifo", "scene"),
+                         ((dir / "fifo").string() + ": scene is not a regular file").c_str(), Error);
+    CHECK_THROWS_WITH_AS(readTextFile(dir / "absent", "scene"),
+                         ((dir / "absent").string() + ": cannot open scene").c_str(), Error);
     // Another file than the one expected (put in its place since) is not read.
     FileIdentity identity;
     REQUIRE(fileKindOf(dir / "a.txt", &identity) == FileKind::Regular);
