@@ -77,8 +77,8 @@ std::shared_ptr<const Texture> SceneTextures::bytes(const std::string& key, std:
         if (finite.texture) {
             warnings_.push_back(where + ": " + quote(key) + ": " + std::to_string(finite.changed) + " of " +
                                 std::to_string(finite.values) +
-                                " texel values are NaN, infinite or negative; read as 0, or the largest "
-                                "finite value for +inf");
+                                " texel values are NaN, infinite or negative; read as 0, or as the texture's "
+                                "largest finite value for +inf");
             texture = std::move(finite.texture);
         }
     }

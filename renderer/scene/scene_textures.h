@@ -17,7 +17,7 @@ namespace strata {
 
 // A texture's texels made finite and non-negative, as every texture Strata renders holds them
 // (colours, emission, coverage, roughness and metallic, normal maps encoded in 0..1): NaN and
-// negative values read as 0, +inf as the largest finite value. An EXR file can hold any float,
+// negative values read as 0, +inf as the texture's largest finite value. An EXR file can hold any float,
 // and one NaN or negative texel of an emitter would turn the image black or negative.
 struct FiniteTexture {
     std::shared_ptr<const Texture> texture;  // null when every value was already so

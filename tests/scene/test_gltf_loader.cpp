@@ -624,7 +624,7 @@ TEST_CASE("gltf: an EXR emissiveTexture's NaN, infinite and negative texels are 
     const MeshData mesh = parseGltfScene(bundle, &report).mesh;
     CHECK(report.warnings == std::vector<std::string>{
                                  "mem/model.gltf: material '' (0) emissiveTexture: 'glow.exr': 4 of 12 texel values are "
-                                 "NaN, infinite or negative; read as 0, or the largest finite value for +inf"});
+                                 "NaN, infinite or negative; read as 0, or as the texture's largest finite value for +inf"});
     const Texture& glow = *mesh.materials[0].textures.emission;
     CHECK(glm::vec3(glow.texel(0, 0)) == glm::vec3(1.0f, 0.5f, 0.25f));
     CHECK(glm::vec3(glow.texel(1, 0)) == glm::vec3(0.0f, 1.0f, 1.0f));

@@ -128,7 +128,7 @@ TEST_CASE("an EXR map_Ke's NaN, infinite and negative texels are a warning, and 
     CHECK(loaded.report.warnings == std::vector<std::string>{
                                         (dir / "mtl" / "quad.mtl").string() +
                                         ":4: map_Ke: 'mtl/glow.exr': 4 of 12 texel values are NaN, infinite or negative; "
-                                        "read as 0, or the largest finite value for +inf"});
+                                        "read as 0, or as the texture's largest finite value for +inf"});
     PathIntegratorSettings settings;
     settings.depth = 0;
     const PathIntegrator integrator(loaded.scene, settings);
