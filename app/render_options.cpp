@@ -54,6 +54,10 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_flag("--watertight", watertight,
                      "Always trace with Embree's watertight triangle test (default: only where the "
                      "scene's rounding gap share needs it)");
+    command.add_option("--max-triangles", maxTriangles,
+                       "Refuse a scene that stores more triangles than this after instancing (a shared "
+                       "mesh's once, each instance counted as 3), before reading its geometry")
+        ->capture_default_str();
 }
 
 std::vector<std::string> RenderOptions::arguments() const {
@@ -89,6 +93,7 @@ std::vector<std::string> RenderOptions::arguments() const {
     }
     if (watertight) args.push_back("--watertight");
     if (allowOutsideFiles) args.push_back("--allow-outside-files");
+    if (maxTriangles != defaults.maxTriangles) args.insert(args.end(), {"--max-triangles", std::to_string(maxTriangles)});
     return args;
 }
 
@@ -159,8 +164,9 @@ Environment RenderOptions::environment() const {
 }
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
-    LoadedScene loaded =
-        strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic);
+    if (maxTriangles < 1) throw Error("--max-triangles: must be at least 1");
+    LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
+                                            SceneBudget{maxTriangles});
     // The --env options override the scene description's environment; without them it stands.
     if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
     return loaded;

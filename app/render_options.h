@@ -34,6 +34,7 @@ struct RenderOptions {
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
     bool allowOutsideFiles = false;  // read references outside the scene's folder (scene_folder.h)
+    uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);

@@ -12,8 +12,8 @@ namespace strata {
 namespace {
 
 // An OBJ carries no camera.
-ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report) {
-    return {parseObjScene(bundle, report), std::nullopt};
+ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
+    return {parseObjScene(bundle, report, budget), std::nullopt};
 }
 
 // Every format Strata reads. A new one is its loader and one line here.
@@ -67,7 +67,28 @@ std::string knownSceneExtensions() {
     return known;
 }
 
-ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report) {
+namespace {
+std::string counted(uint64_t n, const std::string& thing) {
+    return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+}  // namespace
+
+void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget) {
+    if (count.stored <= budget.triangles &&
+        count.placements <= (budget.triangles - count.stored) / kTrianglesPerInstance) {
+        return;
+    }
+    std::string message = path + ": " + counted(count.stored, "triangle") + " after instancing";
+    if (count.placements > 0) {
+        message += " and " + counted(count.placements, "instance") + " (counted as " +
+                   std::to_string(kTrianglesPerInstance) + " triangles each; " + counted(count.placed, "triangle") +
+                   " placed)";
+    }
+    throw Error(message + " exceed the budget of " + counted(budget.triangles, "triangle") +
+                " (--max-triangles N raises it)");
+}
+
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
     const size_t before = report ? report->warnings.size() : 0;
@@ -76,7 +97,7 @@ ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report) {
     const auto line = [](const std::string& message) { return printable(message, message.size()); };
     ParsedScene parsed;
     try {
-        parsed = format.parse(bundle, report);
+        parsed = format.parse(bundle, report, budget);
     } catch (const Error& error) {
         throw Error(line(error.what()));
     }

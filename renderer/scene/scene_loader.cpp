@@ -79,10 +79,10 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-SceneContents parseSceneContents(const SceneBundle& bundle) {
+SceneContents parseSceneContents(const SceneBundle& bundle, const SceneBudget& budget) {
     SceneContents contents;
     LoadReport& report = contents.report;
-    contents.parsed = parseSceneFile(bundle, &report);
+    contents.parsed = parseSceneFile(bundle, &report, budget);
     report.warnings.insert(report.warnings.end(), bundle.outsideNotes.begin(), bundle.outsideNotes.end());
     MeshData& mesh = contents.parsed.mesh;
     if (mesh.triangles.empty()) {
@@ -108,8 +108,8 @@ SceneContents parseSceneContents(const SceneBundle& bundle) {
     return contents;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
-    SceneContents contents = parseSceneContents(bundle);
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
+    SceneContents contents = parseSceneContents(bundle, budget);
     Scene scene(std::move(contents.parsed.mesh), traversal);
     CameraSettings& settings = contents.settings;
     if (!contents.posed) settings.pose = contents.parsed.camera ? *contents.parsed.camera : framingPose(scene);
@@ -133,9 +133,14 @@ std::string describeScene(const LoadedScene& loaded) {
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
                   loaded.scene.mesh().pointLights.size(), s.watertight ? "watertight" : "fast",
                   s.roundingGapShare, extent.x, extent.y, extent.z);
+    std::string text = line;
+    if (s.placements > 0) {
+        text += ", " + std::to_string(s.placedTriangles) + " triangles placed by " + std::to_string(s.placements) +
+                " instances";
+    }
     const size_t warnings = loaded.report.warnings.size();
-    if (warnings == 0) return line;
-    return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
+    if (warnings == 0) return text;
+    return text + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
 }
 
 std::string describeWarnings(const LoadedScene& loaded) {
