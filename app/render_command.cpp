@@ -35,14 +35,14 @@ struct RenderCommand {
 
 Tonemap RenderCommand::checkOptions(int ranks) const {
     if (spp < kPathsPerPass || spp % kPathsPerPass != 0) {
-        throw Error("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
+        throw UsageError("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
                     std::to_string(spp));
     }
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
-    if (render.noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
+    if (render.noiseThreshold > 0.0 && ranks > 1) throw UsageError("--noise-threshold: not available under MPI");
     return *tonemapKind;
 }
 

@@ -100,17 +100,17 @@ std::vector<std::string> RenderOptions::arguments() const {
 RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
-    if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
-    if (depth < 0 || depth > 100000) throw Error("--depth: must be in 0..100000");
-    if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
+    if (!kind) throw UsageError("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
+    if (depth < 0 || depth > 100000) throw UsageError("--depth: must be in 0..100000");
+    if (threads < 0 || threads > 1024) throw UsageError("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     if (epsilon) {
-        if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
+        if (!(*epsilon > 0.0)) throw UsageError("--epsilon: must be positive");
         TruncationChoice choice{};
         try {
             choice = chooseSceneTruncationDepth(*epsilon, scene);
         } catch (const Error& e) {
-            throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
+            throw UsageError(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
@@ -119,12 +119,12 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
-    if (rouletteDepth < -1) throw Error("--roulette-depth: must be -1 (off) or at least 0");
+    if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
     settings.threads = threads;
     if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
-        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+        throw UsageError("--noise-threshold: must be in 0..10 (0: off)");
     }
     settings.adaptive.threshold = noiseThreshold;
     return settings;
@@ -138,12 +138,12 @@ SceneBundle RenderOptions::readSceneBundle() const {
 }
 
 Environment RenderOptions::environment() const {
-    if (!std::isfinite(envRotate)) throw Error("--env-rotate: must be a finite angle in degrees");
+    if (!std::isfinite(envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
     if (!envColor.empty()) {
         for (float c : envColor) {
             if (!(std::isfinite(c) && c >= 0.0f)) {
-                throw Error("--env-color: must be three finite radiances >= 0");
+                throw UsageError("--env-color: must be three finite radiances >= 0");
             }
         }
         environment.kind = Environment::Kind::Uniform;
@@ -164,7 +164,7 @@ Environment RenderOptions::environment() const {
 }
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
-    if (maxTriangles < 1) throw Error("--max-triangles: must be at least 1");
+    if (maxTriangles < 1) throw UsageError("--max-triangles: must be at least 1");
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
                                             SceneBudget{maxTriangles});
     // The --env options override the scene description's environment; without them it stands.
@@ -175,8 +175,8 @@ LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& envi
 LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle(), environment()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
-    if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");
-    if (height && (*height < 1 || *height > 65536)) throw Error("--height: must be in 1..65536");
+    if (width && (*width < 1 || *width > 65536)) throw UsageError("--width: must be in 1..65536");
+    if (height && (*height < 1 || *height > 65536)) throw UsageError("--height: must be in 1..65536");
     return Camera(loaded.settings.pose, width.value_or(loaded.settings.width),
                   height.value_or(loaded.settings.height));
 }

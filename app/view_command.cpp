@@ -31,18 +31,18 @@ struct ViewCommand {
 };
 
 void ViewCommand::run() const {
-    if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (targetSpp < 0) throw UsageError("--target-spp: must be at least 0 (0: no limit)");
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
-        throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
+        throw UsageError("--target-seconds: must be in 0..1e7 (0: no limit)");
     }
-    if (frames < 0) throw Error("--frames: must be at least 0");
-    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
+    if (frames < 0) throw UsageError("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
     if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
-        throw Error("--screenshot: must be a .png file");
+        throw UsageError("--screenshot: must be a .png file");
     }
-    if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
+    if (!screenshot.empty() && frames == 0) throw UsageError("--screenshot needs --frames N");
 
     // Read once: the map lights the first scene and stays in the settings for the scenes opened
     // after it.
@@ -58,6 +58,7 @@ void ViewCommand::run() const {
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
     viewerSettings.files = render.readOptions();
+    viewerSettings.budget = SceneBudget{render.maxTriangles};
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
@@ -83,13 +84,14 @@ void ViewCommand::run() const {
     run.height = window.at(1);
     run.frames = frames;
     if (!screenshot.empty()) run.screenshot = screenshot;
-    // The image size follows the window; --width/--height set the window when given.
+    // The image has the window less the panel beside it; --width/--height set the image instead,
+    // and the window is made that much wider than it.
     if (render.width) {
-        if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
-        run.width = *render.width;
+        if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
+        run.width = *render.width + static_cast<int>(viewer::kPanelWidth);
     }
     if (render.height) {
-        if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
+        if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
         run.height = *render.height;
     }
 
@@ -113,8 +115,10 @@ void ViewCommand::run() const {
     const nlohmann::json out{
         {"scene", scene->scenePath().string()},
         {"context", report.context},
-        {"width", run.width},
+        {"width", run.width},  // the window's
         {"height", run.height},
+        {"image_width", last && !last->sides.empty() ? last->sides[0].image.width : 0},
+        {"image_height", last && !last->sides.empty() ? last->sides[0].image.height : 0},
         {"frames", report.frameSeconds.size()},
         {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
         {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
@@ -145,13 +149,17 @@ void addViewCommand(CLI::App& app) {
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
     sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
-    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_option("--window", command->window,
+                    "Window size W H; the image has it less the panel (--width/--height set the image)")
+        ->expected(2)
+        ->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
         ->capture_default_str();
-    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+    sub->add_option("--scale", command->scale,
+                    "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
     sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
     sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();

@@ -122,10 +122,10 @@ void BenchCommand::run() const {
     const int lastSpp = maxSpp > 0 ? maxSpp : 24 * 16;
     const int refSpp = referenceSpp > 0 ? referenceSpp : 16 * lastSpp;
     if (lastSpp % kPathsPerPass != 0 || refSpp % kPathsPerPass != 0) {
-        throw Error("--max-spp and --reference-spp must be multiples of 24");
+        throw UsageError("--max-spp and --reference-spp must be multiples of 24");
     }
     for (int d : depths) {
-        if (d < 0 || d > 1000) throw Error("--depth: must be in 0..1000");
+        if (d < 0 || d > 1000) throw UsageError("--depth: must be in 0..1000");
     }
     if (!reference.empty() && !fs::is_regular_file(reference)) {
         throw Error("--reference " + reference + ": no such file");
@@ -133,7 +133,7 @@ void BenchCommand::run() const {
     if (!only.empty() && std::find(kSections.begin(), kSections.end(), only) == kSections.end()) {
         std::string known;
         for (const auto& name : kSections) known += (known.empty() ? "" : "|") + name;
-        throw Error("--only: unknown section '" + only + "' (use " + known + ")");
+        throw UsageError("--only: unknown section '" + only + "' (use " + known + ")");
     }
     const fs::path bundled = scenes.empty() ? bundledAssetsDir() : fs::path();
     const fs::path out = outDir;

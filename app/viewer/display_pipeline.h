@@ -4,6 +4,7 @@
 #include <array>
 
 #include "display_image.h"
+#include "frame_target.h"
 #include "gl_loader.h"
 #include "io/tonemap.h"
 
@@ -20,13 +21,6 @@ struct DisplaySettings {
     float errorScale = 0.25f;  // relative error at the top of the false-colour ramp
     float sampleScale = 1.0f;  // sample count at the top of the ramp
     bool operator==(const DisplaySettings&) const = default;
-};
-
-struct Viewport {
-    int x = 0;  // lower-left corner, window pixels (OpenGL convention)
-    int y = 0;
-    int width = 0;
-    int height = 0;
 };
 
 class DisplayPipeline {

@@ -57,6 +57,10 @@ struct WorkerConfig {
 
 inline constexpr int kPreviewDivisor = 4;
 
+// Nice value of the viewer's render threads and of its loading threads: the UI thread stays
+// responsive with every core rendering or loading.
+inline constexpr int kWorkerNiceness = 5;
+
 // Whether going from `a` to `b` restarts accumulation (anything but the targets / paused changed).
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b);
 

@@ -138,12 +138,8 @@ std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t v
     const std::vector<double> values = accessorValues(gltf, index, AccessorUse::Index, where);
     std::vector<uint32_t> indices(values.size());
     for (size_t i = 0; i < values.size(); ++i) {
-        if (!(values[i] < static_cast<double>(vertexCount))) {
-            gltf.fail(where + ": indices accessor " + std::to_string(index) + ": element " +
-                      std::to_string(i) + " of " + std::to_string(values.size()) + " refers past the " +
-                      std::to_string(vertexCount) + " vertices");
-        }
-        indices[i] = static_cast<uint32_t>(values[i]);
+        const bool inRange = values[i] < static_cast<double>(vertexCount);
+        indices[i] = inRange ? static_cast<uint32_t>(values[i]) : kIndexOutOfRange;
     }
     return indices;
 }

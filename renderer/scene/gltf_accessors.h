@@ -17,9 +17,12 @@ enum class AccessorUse { Position, Normal, TexCoord, Index };
 // [0, 1] or [-1, 1]); throws strata::Error naming `where` and the accessor on anything malformed.
 std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where);
 
-// A primitive's indices (accessor `index`) into its `vertexCount` vertices; one out of range is a
-// strata::Error naming `where`, the accessor and the index's position, never its value: that is
-// bytes of a buffer file, which may be any file (one read with --allow-outside-files, say).
+// Marks an index past the primitive's vertices among accessorIndices' answer.
+constexpr uint32_t kIndexOutOfRange = UINT32_MAX;
+
+// A primitive's indices (accessor `index`) into its `vertexCount` vertices, one out of range as
+// kIndexOutOfRange: its value never goes further, since it is bytes of a buffer file, which may be
+// any file (one read with --allow-outside-files, say).
 std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount,
                                       const std::string& where);
 

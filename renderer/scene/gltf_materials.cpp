@@ -1,10 +1,12 @@
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "materials/metallic_roughness.h"
@@ -36,12 +38,13 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
                                          TextureEncoding encoding) {
     if (textureIndex < 0) return nullptr;
     const tinygltf::Texture& texture = gltf.element(gltf.model.textures, textureIndex, where + ": texture");
+    if (const auto transform = extensions.find("KHR_texture_transform"); transform != extensions.end()) {
+        const tinygltf::Value& set = transform->second.Get("texCoord");
+        if (set.IsInt()) texCoord = set.GetNumberAsInt();  // the extension's set overrides the reference's
+    }
     if (texCoord != 0) {
         gltf.warnOnce(where + " uses TEXCOORD_" + std::to_string(texCoord) + ", which Strata does not read; ignored");
         return nullptr;
-    }
-    if (extensions.count("KHR_texture_transform")) {
-        gltf.warnOnce(where + ": KHR_texture_transform is not applied (the texture renders untransformed)");
     }
     if (texture.source < 0) {
         gltf.warnOnce(where + ": texture " + std::to_string(textureIndex) + " has no image it can read; ignored");
@@ -59,7 +62,67 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
     return textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
 }
 
+// The numbers of `name` in a KHR_texture_transform object, else `otherwise`.
+template <size_t N>
+std::array<double, N> transformNumbers(GltfModel& gltf, const std::string& where, const tinygltf::Value& transform,
+                                       const char* name, std::array<double, N> otherwise) {
+    if (!transform.Has(name)) return otherwise;
+    const tinygltf::Value& value = transform.Get(name);
+    std::array<double, N> numbers{};
+    const bool array = N > 1 && value.IsArray() && value.ArrayLen() == N;
+    for (size_t i = 0; i < N; ++i) {
+        const tinygltf::Value& number = array ? value.Get(static_cast<int>(i)) : value;
+        if (!(N == 1 || array) || !number.IsNumber() || !std::isfinite(number.GetNumberAsDouble())) {
+            gltf.fail(where + ": KHR_texture_transform " + name + " needs " + std::to_string(N) + " finite number" +
+                      (N > 1 ? "s" : ""));
+        }
+        numbers[i] = number.GetNumberAsDouble();
+    }
+    return numbers;
+}
+
+// KHR_texture_transform, "Overview": T * R * S as column-major 3x3 matrices on (u, v, 1).
+glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf::ExtensionMap& extensions) {
+    const auto it = extensions.find("KHR_texture_transform");
+    if (it == extensions.end()) return glm::dmat3(1.0);
+    const auto offset = transformNumbers<2>(gltf, where, it->second, "offset", {0.0, 0.0});
+    const double rotation = transformNumbers<1>(gltf, where, it->second, "rotation", {0.0})[0];
+    const auto scale = transformNumbers<2>(gltf, where, it->second, "scale", {1.0, 1.0});
+    const double c = std::cos(rotation);
+    const double s = std::sin(rotation);
+    const glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset[0], offset[1], 1);
+    const glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
+    const glm::dmat3 stretch(scale[0], 0, 0, 0, scale[1], 0, 0, 0, 1);
+    return translate * rotate * stretch;
+}
+
 }  // namespace
+
+glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
+    const tinygltf::Material& m = gltf.model.materials[index];
+    const std::string name = "material '" + m.name + "' (" + std::to_string(index) + ")";
+    const auto& pbr = m.pbrMetallicRoughness;
+    const std::array<std::pair<const char*, std::pair<int, const tinygltf::ExtensionMap*>>, 4> slots{{
+        {"baseColorTexture", {pbr.baseColorTexture.index, &pbr.baseColorTexture.extensions}},
+        {"metallicRoughnessTexture", {pbr.metallicRoughnessTexture.index, &pbr.metallicRoughnessTexture.extensions}},
+        {"emissiveTexture", {m.emissiveTexture.index, &m.emissiveTexture.extensions}},
+        {"normalTexture", {m.normalTexture.index, &m.normalTexture.extensions}},
+    }};
+    const char* first = nullptr;
+    glm::dmat3 transform(1.0);
+    for (const auto& [slot, reference] : slots) {
+        if (reference.first < 0) continue;
+        const glm::dmat3 own = transformOf(gltf, name + " " + slot, *reference.second);
+        if (!first) {
+            first = slot;
+            transform = own;
+        } else if (own != transform) {
+            gltf.warnOnce(name + ": " + slot + "'s KHR_texture_transform differs from " + first +
+                          "'s, which Strata applies to all its textures (one UV set per primitive)");
+        }
+    }
+    return transform;
+}
 
 Material gltfDefaultMaterial() {
     return metallicRoughnessMaterial("(glTF default)", glm::vec3(1.0f), 1.0f, 1.0f, glm::vec3(0.0f));

@@ -12,9 +12,11 @@
 //                   as MASK at 0.5 (a warning), OPAQUE ignores alpha.
 // doubleSided needs nothing: Strata reflects on both sides of every triangle. occlusionTexture is
 // not read: a path tracer finds occlusion itself. Only TEXCOORD_0 is read; a texture on another
-// set, and KHR_texture_transform (not applied), are warnings. A texture that is missing or does
-// not decode is a warning and its factor is used alone.
+// set is a warning. KHR_texture_transform's offset, rotation and scale move the UVs of the
+// material's primitives (gltfTextureTransform), and its texCoord overrides the reference's. A
+// texture that is missing or does not decode is a warning and its factor is used alone.
 #include <cstddef>
+#include <glm/mat3x3.hpp>
 
 #include "materials/material.h"
 #include "scene/gltf_model.h"
@@ -24,6 +26,12 @@ namespace strata {
 
 // The material `index` of the model; throws strata::Error naming it for a factor outside its range.
 Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index);
+
+// KHR_texture_transform of the material's textures as a matrix on homogeneous glTF UVs (v down):
+// T * R * S, rotation counter-clockwise in UV space. Strata has one UV set per primitive, so the
+// material's textures share one transform: the first textured slot's (base colour, then
+// metallic-roughness, emissive, normal), with a warning when another slot's differs.
+glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index);
 
 // The material of a primitive without one ("Materials": base colour 1, metallic 1, roughness 1).
 Material gltfDefaultMaterial();

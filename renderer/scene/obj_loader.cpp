@@ -102,19 +102,55 @@ std::optional<std::array<long, 3>> faceCorner(std::string_view word) {
     throw Error(name + ":" + std::to_string(line) + ": " + message);
 }
 
-// A UTF-8 text without its byte-order mark; UTF-16 (which some Windows tools write) is refused
-// by name, where it would otherwise read as lines of unknown statements.
-std::string_view withoutByteOrderMark(const std::string& text, const std::string& name) {
-    const std::string_view view(text);
+// UTF-16 text after its byte-order mark (big-endian or little-endian) as UTF-8; an unpaired
+// surrogate becomes U+FFFD, as decoders replace what they cannot decode.
+std::string utf8OfUtf16(std::string_view bytes, bool bigEndian, const std::string& name) {
+    if (bytes.size() % 2 != 0) throw Error(name + ": UTF-16 text of an odd number of bytes");
+    const auto unit = [&](size_t i) {
+        const auto hi = static_cast<unsigned char>(bytes[bigEndian ? i : i + 1]);
+        const auto lo = static_cast<unsigned char>(bytes[bigEndian ? i + 1 : i]);
+        return static_cast<uint32_t>(hi << 8 | lo);
+    };
+    std::string text;
+    text.reserve(bytes.size() / 2);
+    for (size_t i = 0; i < bytes.size(); i += 2) {
+        uint32_t c = unit(i);
+        if (c >= 0xD800 && c < 0xDC00 && i + 2 < bytes.size() && unit(i + 2) >= 0xDC00 && unit(i + 2) < 0xE000) {
+            c = 0x10000 + ((c - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
+            i += 2;
+        } else if (c >= 0xD800 && c < 0xE000) {
+            c = 0xFFFD;
+        }
+        if (c < 0x80) {
+            text += static_cast<char>(c);
+        } else if (c < 0x800) {
+            text += {static_cast<char>(0xC0 | c >> 6), static_cast<char>(0x80 | (c & 0x3F))};
+        } else if (c < 0x10000) {
+            text += {static_cast<char>(0xE0 | c >> 12), static_cast<char>(0x80 | (c >> 6 & 0x3F)),
+                     static_cast<char>(0x80 | (c & 0x3F))};
+        } else {
+            text += {static_cast<char>(0xF0 | c >> 18), static_cast<char>(0x80 | (c >> 12 & 0x3F)),
+                     static_cast<char>(0x80 | (c >> 6 & 0x3F)), static_cast<char>(0x80 | (c & 0x3F))};
+        }
+    }
+    return text;
+}
+
+// The file as UTF-8 text without its byte-order mark: UTF-16 with one (which some Windows tools
+// write, as assimp's box_UTF16BE.obj is) decoded into `decoded`, else the file itself.
+std::string_view utf8TextOf(const std::string& file, const std::string& name, std::string& decoded) {
+    const std::string_view view(file);
     if (view.substr(0, 2) == "\xFE\xFF" || view.substr(0, 2) == "\xFF\xFE") {
-        throw Error(name + ": the file is UTF-16 text; save it as UTF-8 or ASCII");
+        decoded = utf8OfUtf16(view.substr(2), view[0] == '\xFE', name);
+        return decoded;
     }
     return view.substr(0, 3) == "\xEF\xBB\xBF" ? view.substr(3) : view;
 }
 
 template <typename Visit>
 void forEachLine(const std::string& file, const std::string& name, Visit visit) {
-    const std::string_view text = withoutByteOrderMark(file, name);
+    std::string decoded;
+    const std::string_view text = utf8TextOf(file, name, decoded);
     size_t lineNumber = 0;
     size_t start = 0;
     while (start <= text.size()) {
@@ -189,6 +225,8 @@ struct ObjScan {
     std::vector<glm::vec3> normals;
     size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
     uint64_t triangles = 0;              // the faces' once triangulated (as fans)
+    size_t vertices = 0;
+    bool hasLines = false;               // l statements
     std::vector<std::string> warnings;
 };
 
@@ -226,6 +264,8 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
                     checkIndex(name, line, (*corner)[2], scan.normals.size(), "normal", "normals");
                 }
             }
+        } else if (key == "l") {
+            scan.hasLines = true;
         } else if (key == "mtllib") {
             if (words.size() < 2) {
                 scan.warnings.push_back(name + ":" + std::to_string(line) + ": mtllib names no file");
@@ -233,7 +273,16 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
             for (size_t i = 1; i < words.size(); ++i) scan.libraries.push_back({std::string(words[i]), line});
         }
     });
+    scan.vertices = vertices;
     return scan;
+}
+
+// A file of vertices (a point cloud, p statements) or lines but no face has nothing to render:
+// refused by what it holds rather than as a scene without triangles.
+void refuseWithoutFaces(const ObjScan& scan, const std::string& name) {
+    if (scan.triangles > 0 || scan.vertices == 0) return;
+    throw Error(name + ": the file holds only " + (scan.hasLines ? "lines" : "points") + " (" +
+                std::to_string(scan.vertices) + " vertices, no faces); Strata renders faces");
 }
 
 // Appends a line as the checks read it: its words, without the comment.
@@ -534,6 +583,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     }
     if (defaultUsed) mesh.materials.push_back({"default", glm::vec3(kDefaultAlbedo), glm::vec3(0.0f)});
     // No triangle is smooth: the mesh says so by having no normals at all (mesh.h).
+    refuseWithoutFaces(scan, objName);
     if (!anySmooth) {
         mesh.normals.clear();
         mesh.triangleNormals.clear();

@@ -104,6 +104,14 @@ struct SceneFormat {
 // the known ones too when there is no extension).
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
 
+// The extension of `path` in lower case, with the dot, as formats are told by it:
+// "ROOM.OBJ" -> ".obj".
+std::string lowerCaseExtension(const std::filesystem::path& path);
+
+// The registered extensions, lower case with the dot, in the table's order: what a file chooser
+// lists as scene files.
+std::vector<std::string_view> sceneExtensions();
+
 // The registered extensions for messages and help: ".obj, .gltf, .glb".
 std::string knownSceneExtensions();
 

@@ -53,6 +53,11 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
 SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath,
                             const SceneReadOptions& options) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        throw Error(printable(path.string()) + ": is a folder, not a scene file (give one of its " +
+                    knownSceneExtensions() + " files)");
+    }
     if (fileKindOf(path) != FileKind::Regular) {
         throw Error(printable(path.string()) + ": no such scene file");
     }
@@ -108,8 +113,11 @@ SceneContents parseSceneContents(const SceneBundle& bundle, const SceneBudget& b
     return contents;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget,
+                       const std::function<void(ParseStage)>& onStage) {
+    if (onStage) onStage(ParseStage::Parsing);
     SceneContents contents = parseSceneContents(bundle, budget);
+    if (onStage) onStage(ParseStage::Building);
     Scene scene(std::move(contents.parsed.mesh), traversal);
     CameraSettings& settings = contents.settings;
     if (!contents.posed) settings.pose = contents.parsed.camera ? *contents.parsed.camera : framingPose(scene);

@@ -11,4 +11,11 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An option given a value it cannot take, or options that do not go together: a usage error,
+// which the command line reports with exit status 2 where an input error exits with 1.
+class UsageError : public Error {
+public:
+    using Error::Error;
+};
+
 }  // namespace strata

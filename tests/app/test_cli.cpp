@@ -259,3 +259,35 @@ TEST_CASE("cli: a texture outside the scene's folder is refused; --allow-outside
     CHECK(viewed.exitCode == 0);
     CHECK(viewed.err.find(note) != std::string::npos);
 }
+
+TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is named with the one meant") {
+    const auto dir = test::scratchDir("cli-exit");
+    std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 zero\n";
+    struct Case {
+        std::string arguments;
+        int exitCode;
+        std::string says;
+    };
+    const std::vector<Case> cases = {
+        {"render " + furnace() + " --sp 24", 2, "strata: render: unknown option '--sp' (did you mean --spp?)"},
+        {"render " + furnace() + " --env-colour 1 1 1", 2, "unknown option '--env-colour' (did you mean --env-color?)"},
+        {"render " + furnace() + " --nonsense-option", 2, "unknown option '--nonsense-option' (see strata render --help)"},
+        {"render " + furnace() + " --spp -5", 2, "--spp: must be a positive multiple of 24"},
+        {"render " + furnace() + " --width 0", 2, "--width: must be in 1..65536"},
+        {"render " + furnace() + " --spp many", 2, "--spp"},
+        {"samples --passes 0", 2, "--passes"},
+        {"frobnicate", 2, "unknown command 'frobnicate'"},
+        {"render " + (dir / "absent.obj").string(), 1, "absent.obj: no such scene file"},
+        {"render " + dir.string(), 1, "is a folder, not a scene file"},
+        {"render " + (dir / "bad.obj").string(), 1, "bad.obj:2"},
+    };
+    for (const auto& c : cases) {
+        const auto result = test::runStrata(c.arguments);
+        INFO("strata " << c.arguments << "\n-> exit " << result.exitCode << ", stderr: " << result.err);
+        CHECK(result.exitCode == c.exitCode);
+        CHECK(lineCount(result.err) == 1);
+        CHECK(result.err.find(c.says) != std::string::npos);
+    }
+    // --help says so.
+    CHECK(test::runStrata("--help").out.find("2 a usage error") != std::string::npos);
+}

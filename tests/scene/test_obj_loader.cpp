@@ -71,8 +71,45 @@ TEST_CASE("obj: malformed lines name the file and the line") {
     CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/-2 3/1\n") ==
           "scene.obj:6: texture coordinate index -2 is out of range (1 texture coordinates so far)");
     CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n") == "scene.obj:5: '1/1/1/1' is not a face vertex");
-    CHECK_THROWS_WITH_AS(parseObj(std::string("\xFF\xFEv\0 \0", 6), "utf16.obj", "", "m.mtl"),
-                         "utf16.obj: the file is UTF-16 text; save it as UTF-8 or ASCII", Error);
+    CHECK_THROWS_WITH_AS(parseObj(std::string("\xFF\xFEv\0 ", 5), "utf16.obj", "", "m.mtl"),
+                         "utf16.obj: UTF-16 text of an odd number of bytes", Error);
+}
+
+TEST_CASE("obj: a file of only points or lines is refused as such, not as a scene without triangles") {
+    const auto errorOfObj = [](const std::string& text) {
+        try {
+            parseObj(text, "scene.obj", "", "scene.mtl");
+        } catch (const Error& error) {
+            return std::string(error.what());
+        }
+        return std::string("(loaded)");
+    };
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\n") ==
+          "scene.obj: the file holds only points (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n") ==
+          "scene.obj: the file holds only points (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n") ==
+          "scene.obj: the file holds only lines (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nf 1 2 3\n") == "(loaded)");
+}
+
+TEST_CASE("obj: UTF-16 text with its byte-order mark, either byte order, is read as UTF-8") {
+    // A comment with a character beyond the BMP (a surrogate pair) and one with an unpaired
+    // surrogate, before a triangle.
+    const std::u16string text = u"# \U0001F600 \xD800\nv 0 0 0\nv 2 0 0\nv 0 3 0\nf 1 2 3\n";
+    for (const bool bigEndian : {true, false}) {
+        CAPTURE(bigEndian);
+        std::string bytes = bigEndian ? "\xFE\xFF" : "\xFF\xFE";
+        for (const char16_t unit : text) {
+            const auto hi = static_cast<char>(unit >> 8);
+            const auto lo = static_cast<char>(unit & 0xFF);
+            bytes += bigEndian ? std::string{hi, lo} : std::string{lo, hi};
+        }
+        const MeshData mesh = parseObj(bytes, "utf16.obj", "", "m.mtl");
+        REQUIRE(mesh.triangles.size() == 1);
+        CHECK(mesh.positions[1] == glm::vec3(2, 0, 0));
+        CHECK(mesh.positions[2] == glm::vec3(0, 3, 0));
+    }
 }
 
 
@@ -253,7 +290,7 @@ TEST_CASE("obj: the models of Debian's assimp-testmodels load or are refused in 
     }
     // Models that assimp and Blender open; the others are test files of broken input.
     const std::set<std::string> mustLoad = {
-        "box.obj", "box_longline.obj", "box_mat_with_spaces.obj", "box_without_lineending.obj",
+        "box.obj", "box_longline.obj", "box_mat_with_spaces.obj", "box_UTF16BE.obj", "box_without_lineending.obj",
         "concave_polygon.obj", "cube_mtllib_after_g.obj", "cube_usemtl.obj",
         "cube_with_vertexcolors.obj", "cube_with_vertexcolors_uni.obj", "empty_mat.obj",
         "multiple_spaces.obj", "regr01.obj", "regr_3429812.obj", "space_in_material_name.obj",

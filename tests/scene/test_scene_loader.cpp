@@ -193,3 +193,22 @@ TEST_CASE("scene loader: a description's environment file that is missing or not
                          doctest::Contains("square.exr: an environment map must be a latitude-longitude image"),
                          Error);
 }
+
+TEST_CASE("scene loader: parseScene names its stages as they begin, and one that throws ends it there") {
+    const SceneBundle bundle = readSceneBundle(test::sourceDir() / "assets/cornell/cornell.obj");
+    std::vector<ParseStage> stages;
+    const LoadedScene loaded =
+        parseScene(bundle, Traversal::Automatic, {}, [&](ParseStage stage) { stages.push_back(stage); });
+    CHECK(stages == std::vector<ParseStage>{ParseStage::Parsing, ParseStage::Building});
+    CHECK(loaded.scene.summary().triangles == 32);
+
+    struct Stop {};
+    stages.clear();
+    CHECK_THROWS_AS(parseScene(bundle, Traversal::Automatic, {},
+                               [&](ParseStage stage) {
+                                   stages.push_back(stage);
+                                   if (stage == ParseStage::Building) throw Stop{};
+                               }),
+                    Stop);
+    CHECK(stages == std::vector<ParseStage>{ParseStage::Parsing, ParseStage::Building});
+}
