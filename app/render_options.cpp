@@ -51,6 +51,10 @@ void RenderOptions::addTo(CLI::App& command) {
                        "Adaptive sampling: a pixel stops receiving passes at this relative "
                        "standard error (0: off)")
         ->capture_default_str();
+    command.add_flag("--allow-outside-files", allowOutsideFiles,
+                     "Read the files a scene refers to (MTL, textures, glTF buffers and images, the "
+                     "description's environment) also outside the scene file's folder: for your own "
+                     "scenes only (default: such a reference is refused)");
     command.add_flag("--watertight", watertight,
                      "Always trace with Embree's watertight triangle test (default: only where the "
                      "scene's rounding gap share needs it)");
@@ -93,6 +97,7 @@ std::vector<std::string> RenderOptions::arguments() const {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
     if (watertight) args.push_back("--watertight");
+    if (allowOutsideFiles) args.push_back("--allow-outside-files");
     if (maxTriangles != defaults.maxTriangles) args.insert(args.end(), {"--max-triangles", std::to_string(maxTriangles)});
     return args;
 }
@@ -135,7 +140,7 @@ SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
     return strata::readSceneBundle(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
-                                   cameraPath);
+                                   cameraPath, readOptions());
 }
 
 BackdropSetting RenderOptions::backdrop() const {

@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string background;        // --background (film/backdrop.h's syntax); empty: automatic
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
+    bool allowOutsideFiles = false;  // read references outside the scene's folder (scene_folder.h)
     uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
@@ -46,7 +47,7 @@ struct RenderOptions {
     // What camera rays that miss show (--background); throws strata::Error naming the option.
     BackdropSetting backdrop() const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
-    // file) without parsing them.
+    // file) without parsing them, confined to the scene's folder unless allowOutsideFiles.
     SceneBundle readSceneBundle() const;
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
@@ -56,6 +57,8 @@ struct RenderOptions {
     LoadedScene parseScene(SceneBundle files, const Environment& environment) const;
     // Loads the scene and camera: parseScene(readSceneBundle(), environment()).
     LoadedScene loadScene() const;
+    // What reading the scene may read (allowOutsideFiles).
+    SceneReadOptions readOptions() const { return {allowOutsideFiles}; }
     // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;
 };

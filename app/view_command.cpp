@@ -66,6 +66,7 @@ void ViewCommand::run() const {
     viewer::ViewerSettings viewerSettings;
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
+    viewerSettings.files = render.readOptions();
     viewerSettings.budget = SceneBudget{render.maxTriangles};
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};

@@ -43,6 +43,7 @@ struct BenchCommand {
     bool vsCycles = false;
     bool skipThroughput = false;
     bool skipRealScenes = false;
+    bool allowOutsideFiles = false;
     std::string only;  // one section of kSections; empty: all that the other options select
     uint64_t seed = 0;
     int threads = 0;
@@ -164,6 +165,7 @@ void BenchCommand::run() const {
     convergence.makeReference = makeReference || quick;  // quick references are small and cheap
     if (!reference.empty()) convergence.referenceFile = fs::path(reference);
     convergence.seed = seed;
+    convergence.files.allowOutsideFiles = allowOutsideFiles;
     convergence.skips = true;
     convergence.threads = threads;
     convergence.outDir = out;
@@ -281,6 +283,8 @@ void addBenchCommand(CLI::App& app) {
     sub->add_option("--only", command->only,
                     "Run this section alone, whatever the other options leave out: errors, throughput, "
                     "embree (--vs-embree), cycles (--vs-cycles), viewer, real-scenes or ranks");
+    sub->add_flag("--allow-outside-files", command->allowOutsideFiles,
+                  "Read the files the scenes refer to also outside their folders (your own scenes only)");
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
     sub->callback([command] { command->run(); });

@@ -183,7 +183,7 @@ std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) 
     std::vector<ConvergenceRun> runs;
     std::map<std::string, int> uses;  // two scenes may share a name (assets/cornell, shared cornell)
     for (const auto& scenePath : settings.scenes) {
-        const LoadedScene loaded = loadScene(scenePath);
+        const LoadedScene loaded = loadScene(scenePath, std::nullopt, settings.files);
         std::string label = sceneName(loaded.scenePath());
         if (const int n = ++uses[label]; n > 1) label.append("-").append(std::to_string(n));
         std::fprintf(stderr, "bench scene %s: %s\n", label.c_str(), scenePath.string().c_str());

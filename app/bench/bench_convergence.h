@@ -17,6 +17,7 @@ namespace strata {
 
 struct ConvergenceSettings {
     std::vector<std::filesystem::path> scenes;
+    SceneReadOptions files;  // what reading them may read (--allow-outside-files)
     std::vector<std::string> samplers;  // names from direction_sampler.h
     std::vector<int> depths;
     int width = 128;            // image width; the height keeps the scene's aspect

@@ -121,7 +121,7 @@ LoadOutcome LoadWorker::load(const LoadRequest& request) {
     try {
         if (request.kind == LoadRequest::Kind::Scene) {
             enter("reading files");
-            SceneBundle bundle = readSceneBundle(request.path);
+            SceneBundle bundle = readSceneBundle(request.path, std::nullopt, request.files);
             auto scene = std::make_shared<LoadedScene>(
                 parseScene(std::move(bundle), request.traversal, request.budget, [&](ParseStage stage) {
                     enter(stage == ParseStage::Parsing ? "parsing" : "building the BVH");

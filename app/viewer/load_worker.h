@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "lights/environment.h"
+#include "scene/scene_folder.h"
 #include "scene/scene_loader.h"
 #include "scene/traversal_precision.h"
 
@@ -27,6 +28,7 @@ struct LoadRequest {
     std::filesystem::path path;
     Traversal traversal = Traversal::Automatic;  // a scene's triangle test
     SceneBudget budget;                          // the triangles a scene may store
+    SceneReadOptions files;                      // what a scene may read (--allow-outside-files)
 };
 
 // The load in flight, for the panel's progress line.

@@ -58,7 +58,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
         openEnvironmentMap(path);
         return;
     }
-    sceneLoader_.start({LoadRequest::Kind::Scene, path, settings_.traversal, settings_.budget});
+    sceneLoader_.start({LoadRequest::Kind::Scene, path, settings_.traversal, settings_.budget, settings_.files});
 }
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
@@ -102,8 +102,12 @@ void Viewer::showScene(std::shared_ptr<LoadedScene> scene, double seconds) {
     const std::string path = scene_->scenePath().string();
     panel_.setScenePath(path);
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
-    // The loader's note on how it read these files, when it has one to give, goes here.
-    panel_.setSceneNote({});
+    // Said apart from the warnings, since it is why the scene opened at all: without
+    // --allow-outside-files these files would have been refused.
+    const size_t outside = scene_->bundle.outsideNotes.size();
+    panel_.setSceneNote(outside == 0 ? std::string()
+                                     : "read " + std::to_string(outside) + (outside == 1 ? " file" : " files") +
+                                           " outside the scene's folder, as --allow-outside-files lets it");
     const size_t warnings = scene_->report.warnings.size();
     std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
     char time[32];

@@ -23,6 +23,7 @@
 #include "file_dialog.h"
 #include "lights/environment.h"
 #include "load_worker.h"
+#include "scene/scene_folder.h"
 #include "scene/scene_format.h"
 #include "scene/traversal_precision.h"
 #include "render_worker.h"
@@ -59,6 +60,8 @@ struct ViewerSettings {
     Environment environment;
     // The triangle test of every scene opened (--watertight: always the watertight one).
     Traversal traversal = Traversal::Automatic;
+    // What every scene opened may read (--allow-outside-files).
+    SceneReadOptions files;
     // The triangle budget of every scene opened (--max-triangles).
     SceneBudget budget;
 

@@ -133,5 +133,15 @@ std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse
     return values;
 }
 
+std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount,
+                                      const std::string& where) {
+    const std::vector<double> values = accessorValues(gltf, index, AccessorUse::Index, where);
+    std::vector<uint32_t> indices(values.size());
+    for (size_t i = 0; i < values.size(); ++i) {
+        const bool inRange = values[i] < static_cast<double>(vertexCount);
+        indices[i] = inRange ? static_cast<uint32_t>(values[i]) : kIndexOutOfRange;
+    }
+    return indices;
+}
 
 }  // namespace strata

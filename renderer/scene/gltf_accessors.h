@@ -2,6 +2,7 @@
 // glTF accessors read into numbers, checked against their buffer views and buffers so that no
 // read leaves them, and against the component types glTF 2.0 allows for each use ("Meshes":
 // attribute types, KHR_mesh_quantization's integer ones; "Accessor Data Types" for indices).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,14 @@ enum class AccessorUse { Position, Normal, TexCoord, Index };
 // The accessor's elements, their components one after another (a normalized integer mapped onto
 // [0, 1] or [-1, 1]); throws strata::Error naming `where` and the accessor on anything malformed.
 std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where);
+
+// Marks an index past the primitive's vertices among accessorIndices' answer.
+constexpr uint32_t kIndexOutOfRange = UINT32_MAX;
+
+// A primitive's indices (accessor `index`) into its `vertexCount` vertices, one out of range as
+// kIndexOutOfRange: its value never goes further, since it is bytes of a buffer file, which may be
+// any file (one read with --allow-outside-files, say).
+std::vector<uint32_t> accessorIndices(const GltfModel& gltf, int index, size_t vertexCount,
+                                      const std::string& where);
 
 }  // namespace strata

@@ -8,9 +8,15 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "util/printable.h"
+
 namespace strata {
 namespace {
-bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// For a vec3 of doubles, or of the floats they become.
+template <typename Vector>
+bool isFinite(const Vector& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 }  // namespace
 
 // glTF 2.0, "Cameras": a camera looks down its node's local -Z, +Y up; the first one reached
@@ -39,6 +45,10 @@ void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::op
         return;
     }
     pose.position = glm::vec3(position);
+    if (!isFinite(pose.position)) {
+        gltf.warnOnce("camera " + std::to_string(index) + " is beyond float range (the scene is framed instead)");
+        return;
+    }
     pose.lookAt = glm::vec3(position + glm::normalize(forward));
     pose.up = glm::vec3(glm::normalize(up));
     camera = pose;
@@ -62,7 +72,7 @@ void aimGltfCameraAtScene(CameraPose& pose, const MeshData& mesh) {
 // not rendered yet). A light points down its node's local -Z.
 void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData& mesh) {
     const tinygltf::Light& light = gltf.element(gltf.model.lights, index, "KHR_lights_punctual light");
-    const std::string name = "light '" + light.name + "' (" + std::to_string(index) + ")";
+    const std::string name = "light " + quote(light.name) + " (" + std::to_string(index) + ")";
     glm::dvec3 color(1.0);
     if (!light.color.empty()) {
         if (light.color.size() != 3) gltf.fail(name + ": color needs 3 numbers");
@@ -72,7 +82,9 @@ void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData&
         !(light.intensity >= 0.0) || !std::isfinite(light.intensity)) {
         gltf.fail(name + ": color and intensity must be finite and not negative");
     }
+    // Checked again as the floats they become: 1e300 is a finite double and an infinite float.
     const glm::vec3 emitted(light.intensity * color);
+    if (!isFinite(emitted)) gltf.fail(name + ": intensity x color is beyond float range");
     if (light.type == "directional") {
         const glm::dvec3 direction(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
         if (!(glm::length(direction) > 0.0)) gltf.fail(name + ": its node's transform has no direction");
@@ -82,9 +94,11 @@ void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData&
     if (light.type == "spot") {
         gltf.warnOnce("spot lights light as point lights for now (their cones are ignored)");
     } else if (light.type != "point") {
-        gltf.fail(name + ": unknown type '" + light.type + "' (known: point, spot, directional)");
+        gltf.fail(name + ": unknown type " + quote(light.type) + " (known: point, spot, directional)");
     }
-    mesh.pointLights.emplace_back(glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0)), emitted);
+    const glm::vec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    if (!isFinite(position)) gltf.fail(name + ": its node's position is beyond float range");
+    mesh.pointLights.emplace_back(position, emitted);
 }
 
 }  // namespace strata

@@ -10,8 +10,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <nlohmann/json.hpp>
@@ -21,6 +21,7 @@
 #include "scene/gltf_nodes.h"
 #include "scene/scene_textures.h"
 #include "util/error.h"
+#include "util/printable.h"
 #include "util/text_file.h"
 
 namespace strata {
@@ -48,31 +49,44 @@ void warnUnreadExtensions(GltfModel& gltf) {
     }
 }
 
-// The files of a .gltf's URIs while reading: from its folder, each kept for the bundle.
+// The files of a glTF's URIs while reading, through the scene's folder, each kept for the bundle.
+// A refusal cannot leave through tinygltf as an exception: it is kept, the file reported missing,
+// and thrown once tinygltf returns.
 struct FolderFiles {
-    std::filesystem::path folder;
+    SceneFolder& folder;
+    std::string where;  // "PATH: URI", starting the folder's messages
     std::vector<SceneFile> read;
+    std::optional<Error> refusal;
+
+    const SceneFile* find(const std::string& name) const {
+        const auto it =
+            std::find_if(read.begin(), read.end(), [&](const SceneFile& file) { return file.name == name; });
+        return it == read.end() ? nullptr : &*it;
+    }
 };
 
-bool folderFileExists(const std::string& name, void* files) {
-    return std::filesystem::is_regular_file(static_cast<FolderFiles*>(files)->folder / name);
+// tinygltf asks for a URI's file here before reading it (by the URI %-decoded, then by
+// "./" and that), so the file is read now.
+bool folderFileExists(const std::string& name, void* user) {
+    auto& files = *static_cast<FolderFiles*>(user);
+    if (files.refusal) return false;
+    if (files.find(name)) return true;
+    try {
+        std::optional<std::string> bytes = files.folder.read(name, files.where);
+        if (!bytes) return false;
+        files.read.push_back({name, std::move(*bytes)});
+        return true;
+    } catch (const Error& error) {
+        files.refusal = error;
+        return false;
+    }
 }
 
-bool readFolderFile(std::vector<unsigned char>* out, std::string* err, const std::string& name,
-                    void* files) {
-    auto& folder = *static_cast<FolderFiles*>(files);
-    auto it = std::find_if(folder.read.begin(), folder.read.end(),
-                           [&](const SceneFile& file) { return file.name == name; });
-    if (it == folder.read.end()) {
-        try {
-            folder.read.push_back({name, readTextFile(folder.folder / name, "file")});
-        } catch (const Error& error) {
-            *err = error.what();
-            return false;
-        }
-        it = folder.read.end() - 1;
-    }
-    out->assign(it->bytes.begin(), it->bytes.end());
+bool readFolderFile(std::vector<unsigned char>* out, std::string* /*err*/, const std::string& name,
+                    void* user) {
+    const SceneFile* file = static_cast<FolderFiles*>(user)->find(name);
+    if (!file) return false;
+    out->assign(file->bytes.begin(), file->bytes.end());
     return true;
 }
 
@@ -109,14 +123,46 @@ std::string firstLine(const std::string& text) {
     return text.substr(start, text.find_first_of("\n\r", start) - start);
 }
 
-// The JSON of a glTF file: all of it, or a binary file's first chunk (glTF 2.0, "Binary glTF
-// Layout": a 12-byte header, then the JSON chunk's length and type).
+uint32_t littleEndian32(std::string_view bytes, size_t offset) {
+    const auto byte = [&](size_t k) {
+        return static_cast<uint32_t>(static_cast<unsigned char>(bytes[offset + k]));
+    };
+    return byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
+}
+
+// A binary glTF's layout against its size (glTF 2.0, "Binary glTF Layout"): the 12-byte header
+// (magic, version 2, the total length), then chunks of an 8-byte header (length, type) and their
+// data, all within the length and the length within the file. tinygltf 2.7 does not check all of
+// it (a BIN chunk whose length counts its header's 8 bytes as data is read 8 bytes past the end).
+void checkBinaryLayout(std::string_view bytes, const std::string& path) {
+    const auto fail = [&](const std::string& what) { throw Error(path + ": " + what); };
+    if (bytes.size() < 12) fail("shorter than a binary glTF's 12-byte header");
+    if (const uint32_t version = littleEndian32(bytes, 4); version != 2) {
+        fail("binary glTF version " + std::to_string(version) + "; Strata reads version 2");
+    }
+    const size_t length = littleEndian32(bytes, 8);
+    if (length > bytes.size()) {
+        fail("the binary glTF header gives a length of " + std::to_string(length) + " bytes, the file has " +
+             std::to_string(bytes.size()));
+    }
+    size_t chunk = 0;
+    for (size_t offset = 12; offset < length; ++chunk) {
+        const std::string name = "binary glTF chunk " + std::to_string(chunk);
+        if (length - offset < 8) fail(name + "'s 8-byte header runs past the end of the file");
+        const size_t data = littleEndian32(bytes, offset);
+        if (data > length - offset - 8) {
+            fail(name + " claims " + std::to_string(data) + " bytes, " + std::to_string(length - offset - 8) +
+                 " are left");
+        }
+        offset += 8 + data;
+    }
+}
+
+// The JSON of a glTF file: all of it, or a binary file's first chunk (checkBinaryLayout's).
 std::string_view jsonOf(const std::string& bytes, bool binary) {
     if (!binary) return bytes;
     if (bytes.size() < 20) return {};
-    uint32_t length;
-    std::memcpy(&length, bytes.data() + 12, sizeof length);
-    return std::string_view(bytes).substr(20, length);
+    return std::string_view(bytes).substr(20, littleEndian32(bytes, 12));
 }
 
 // Refuses a file that requires an extension Strata does not implement, before tinygltf reads
@@ -129,7 +175,7 @@ void checkRequiredExtensions(const nlohmann::json& document, const std::string& 
         if (!extension.is_string()) continue;
         const auto name = extension.get<std::string>();
         if (!implemented(name)) {
-            throw Error(path + ": requires extension " + name + ", which Strata does not implement");
+            throw Error(path + ": requires extension " + printable(name) + ", which Strata does not implement");
         }
     }
 }
@@ -188,6 +234,7 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path,
                           tinygltf::FsCallbacks files, std::vector<std::string>* images) {
     if (bytes.size() > std::numeric_limits<uint32_t>::max()) throw Error(path + ": larger than 4 GB");
     const bool binary = bytes.compare(0, 4, "glTF") == 0;
+    if (binary) checkBinaryLayout(bytes, path);
     nlohmann::json document = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, /*allow_exceptions=*/false);
     std::string rewritten;  // the bytes tinygltf reads when they differ from the file's
     if (document.is_object()) {  // else tinygltf says what is wrong with it
@@ -211,21 +258,29 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path,
                : loader.LoadASCIIFromString(&model, &error, &warning, read.data(), size, "");
     if (!loaded) {
         const std::string reason = firstLine(error);
-        throw Error(path + ": " + (reason.empty() ? "not a glTF file" : reason));
+        // tinygltf's text may quote the file: a name, a whole data: URI.
+        throw Error(path + ": " + (reason.empty() ? "not a glTF file" : printable(reason, reason.size())));
     }
     return model;
 }
 
 }  // namespace
 
-std::vector<SceneFile> readGltfScene(const std::filesystem::path& path) {
+std::vector<SceneFile> readGltfScene(const std::filesystem::path& path, SceneFolder& folder) {
     std::vector<SceneFile> files{{path.filename().string(), readTextFile(path, "scene")}};
-    FolderFiles folder{path.parent_path(), {}};
+    const std::string name = printable(path.string());
+    FolderFiles uris{folder, name + ": URI", {}, std::nullopt};
     std::vector<std::string> images;
-    loadModel(files.front().bytes, path.string(),
-              tinygltf::FsCallbacks{folderFileExists, sameName, readFolderFile, nullptr, &folder}, &images);
-    files.insert(files.end(), std::make_move_iterator(folder.read.begin()),
-                 std::make_move_iterator(folder.read.end()));
+    try {
+        loadModel(files.front().bytes, name,
+                  tinygltf::FsCallbacks{folderFileExists, sameName, readFolderFile, nullptr, &uris}, &images);
+    } catch (const Error&) {
+        if (!uris.refusal) throw;
+    }
+    // Refused, the file was missing to tinygltf, which may have gone on or failed for it.
+    if (uris.refusal) throw *uris.refusal;
+    files.insert(files.end(), std::make_move_iterator(uris.read.begin()),
+                 std::make_move_iterator(uris.read.end()));
     return files;
 }
 

@@ -13,15 +13,17 @@
 #include <filesystem>
 #include <vector>
 
+#include "scene/scene_folder.h"
 #include "scene/scene_format.h"
 
 namespace strata {
 
-// The format's reading (scene_format.h): `path` and every buffer and image file it refers to by
-// URI (data: URIs are inside it), named by their URIs, relative to its folder; a missing image
-// is left out (parsing warns and uses the material's factors alone). Throws strata::Error naming a malformed file or a
-// missing buffer.
-std::vector<SceneFile> readGltfScene(const std::filesystem::path& path);
+// The format's reading (scene_format.h): `path` and, through `folder` (scene_folder.h), every
+// buffer and image file it refers to by URI (data: URIs are inside it), named by their URIs as
+// tinygltf %-decodes them, relative to its folder; a missing image is left out (parsing warns
+// and uses the material's factors alone). Throws strata::Error naming a malformed file, a
+// missing buffer or a URI that `folder` refuses.
+std::vector<SceneFile> readGltfScene(const std::filesystem::path& path, SceneFolder& folder);
 
 // The format's parsing: the bundle's first file as the glTF (JSON or binary), its URIs resolved
 // among the bundle's files and never on the file system. Throws strata::Error naming the file

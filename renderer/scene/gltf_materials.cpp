@@ -10,9 +10,14 @@
 #include <vector>
 
 #include "materials/metallic_roughness.h"
+#include "util/printable.h"
 
 namespace strata {
 namespace {
+
+bool isFiniteFloat(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 Material metallicRoughnessMaterial(const std::string& name, const glm::vec3& baseColor, float metallic,
                                    float roughness, const glm::vec3& emission,
@@ -52,7 +57,7 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
                                  ? "image " + std::to_string(source)
                                  : image.uri;
     if (source >= gltf.images.size() || gltf.images[source].empty()) {
-        gltf.warnOnce(where + ": image '" + name + "' is missing; using the factor alone");
+        gltf.warnOnce(where + ": image " + quote(name) + " is missing; using the factor alone");
         return nullptr;
     }
     return textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
@@ -163,7 +168,7 @@ Material gltfDefaultMaterial() {
 
 Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     const tinygltf::Material& m = gltf.model.materials[index];
-    const std::string name = "material '" + m.name + "' (" + std::to_string(index) + ")";
+    const std::string name = "material " + quote(m.name) + " (" + std::to_string(index) + ")";
     const auto& pbr = m.pbrMetallicRoughness;
     const auto inUnitRange = [](double v) { return v >= 0.0 && v <= 1.0; };
     if (pbr.baseColorFactor.size() != 4 ||
@@ -211,9 +216,14 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
             gltf.warnOnce(where + ": its textures are not applied (the factors are)");
         }
     }
-    Material material = metallicRoughnessMaterial(
-        m.name, baseColor, metallic, static_cast<float>(pbr.roughnessFactor),
-        glm::vec3(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2])), dielectricF0);
+    // Checked as the float it becomes: a finite double such as 1e300 is infinite as a float.
+    const glm::vec3 emission(strength *
+                             glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]));
+    if (!isFiniteFloat(emission)) {
+        gltf.fail(name + ": emissiveStrength x emissiveFactor is beyond float range");
+    }
+    Material material = metallicRoughnessMaterial(m.name, baseColor, metallic,
+                                                  static_cast<float>(pbr.roughnessFactor), emission, dielectricF0);
 
     MaterialTextures& maps = material.textures;
     maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
@@ -226,6 +236,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     maps.normal = textureOf(gltf, textures, name + " normalTexture", m.normalTexture.index, m.normalTexture.texCoord,
                             m.normalTexture.extensions, TextureEncoding::Data);
     maps.normalScale = static_cast<float>(m.normalTexture.scale);
+    if (!std::isfinite(maps.normalScale)) gltf.fail(name + ": normalTexture scale is beyond float range");
 
     // KHR_materials_transmission: the dielectric part (1 - metallic) transmits this share, through
     // a dielectric of the material's index and roughness tinted by the base colour;

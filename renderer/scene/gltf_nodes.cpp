@@ -356,21 +356,17 @@ private:
             }
         }
         // An index past the vertices leaves out the triangles that use it, with a warning, as
-        // assimp does (kOutOfRange marks it until the triangles are made).
-        constexpr uint32_t kOutOfRange = std::numeric_limits<uint32_t>::max();
+        // assimp does (kIndexOutOfRange marks it until the triangles are made).
         std::vector<uint32_t> vertices;
         if (primitive.indices >= 0) {
-            for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
-                const bool inRange = index < static_cast<double>(vertexCount);
-                vertices.push_back(inRange ? static_cast<uint32_t>(index) : kOutOfRange);
-            }
+            vertices = accessorIndices(gltf_, primitive.indices, vertexCount, where);
         } else {
             for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
         }
         const std::vector<uint32_t> made = triangleCorners(primitive.mode, std::move(vertices), where);
         std::vector<uint32_t> corners;
         for (auto first = made.begin(); first != made.end(); first += 3) {
-            if (std::find(first, first + 3, kOutOfRange) == first + 3) corners.insert(corners.end(), first, first + 3);
+            if (std::find(first, first + 3, kIndexOutOfRange) == first + 3) corners.insert(corners.end(), first, first + 3);
         }
         if (corners.size() < made.size()) {
             const size_t left = (made.size() - corners.size()) / 3;

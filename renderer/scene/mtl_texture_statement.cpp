@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <utility>
 
@@ -58,7 +59,9 @@ std::optional<MtlTextureStatement> parseMtlTextureStatement(const std::vector<st
         const auto arguments = static_cast<size_t>(fixed->second);
         if (i + arguments > words.size()) return std::nullopt;
         if (option == "-bm") {
-            if (const auto value = number(words[i])) statement.bumpMultiplier = *value;
+            // from_chars reads "nan" and "inf"; a multiplier must be a finite number.
+            const auto value = number(words[i]);
+            if (value && std::isfinite(*value)) statement.bumpMultiplier = *value;
         }
         if (option == "-imfchan" && words[i].size() == 1) statement.channel = words[i].front();
         i += arguments;

@@ -19,6 +19,7 @@
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
 #include "scene/scene_textures.h"
+#include "util/printable.h"
 #include "util/text_file.h"
 
 namespace strata {
@@ -170,7 +171,7 @@ bool checkNumbers(const std::string& name, size_t line, const std::vector<std::s
                   size_t minCount, size_t maxCount, bool allowNonFinite = false) {
     const size_t count = words.size() - 1;
     if (count < minCount || count > maxCount) {
-        failAt(name, line, "'" + std::string(words[0]) + "' takes " + std::to_string(minCount) +
+        failAt(name, line, quote(words[0]) + " takes " + std::to_string(minCount) +
                                (maxCount > minCount ? " to " + std::to_string(maxCount) : "") +
                                " numbers, got " + std::to_string(count));
     }
@@ -180,12 +181,12 @@ bool checkNumbers(const std::string& name, size_t line, const std::vector<std::s
         switch (classifyNumber(words[i])) {
             case NumberKind::Finite: break;
             case NumberKind::NonFinite:
-                if (!allowNonFinite) failAt(name, line, "'" + word + "' is not a finite number");
+                if (!allowNonFinite) failAt(name, line, quote(word) + " is not a finite number");
                 finite = false;
                 break;
             case NumberKind::OutOfRange:
-                failAt(name, line, "'" + word + "' is out of range for a 32-bit float");
-            case NumberKind::Invalid: failAt(name, line, "'" + word + "' is not a number");
+                failAt(name, line, quote(word) + " is out of range for a 32-bit float");
+            case NumberKind::Invalid: failAt(name, line, quote(word) + " is not a number");
         }
     }
     return finite;
@@ -253,7 +254,7 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
             scan.triangles += words.size() - 3;
             for (size_t i = 1; i < words.size(); ++i) {
                 const auto corner = faceCorner(words[i]);
-                if (!corner) failAt(name, line, "'" + std::string(words[i]) + "' is not a face vertex");
+                if (!corner) failAt(name, line, quote(words[i]) + " is not a face vertex");
                 checkIndex(name, line, (*corner)[0], vertices, "vertex", "vertices");
                 if ((*corner)[1] != 0) {
                     checkIndex(name, line, (*corner)[1], textureCoordinates, "texture coordinate",
@@ -336,7 +337,7 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum";
         const bool texture = isMtlTextureKey(key);
         if ((colour || scalar || texture) && materials.size() == first) {
-            failAt(name, line, "'" + std::string(key) + "' before any newmtl");
+            failAt(name, line, quote(key) + " before any newmtl");
         }
         if (texture) {
             const auto statement = parseMtlTextureStatement(words);
@@ -388,7 +389,7 @@ std::string objForTinyobj(const std::string& text, const std::string& name,
             if (!undefined.insert(material).second) return;
             const std::string at = name + ":" + std::to_string(line) + ": ";
             warnings.push_back(at + (material.empty() ? "usemtl names no material"
-                                                      : "material '" + material + "' is not defined") +
+                                                      : "material " + quote(material) + " is not defined") +
                                "; " + kDefaultMaterialNote);
         } else if (key == "v" || key == "vn" || key == "vt" || key == "f") {
             appendLine(kept, words);
@@ -418,7 +419,7 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     material.specular = {m.specular[0], m.specular[1], m.specular[2]};
     material.roughness = source.hasRoughness ? m.roughness : roughnessFromShininess(m.shininess);
     const std::string at =
-        source.file + ":" + std::to_string(source.line) + ": material '" + source.name + "'";
+        source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
     if (!isFinite(material.diffuse) || !isFinite(material.emission) || !isFinite(material.specular) ||
         !std::isfinite(material.roughness) ||
         glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
@@ -473,7 +474,7 @@ void addTextures(Material& material, const MtlMaterial& source, const std::strin
             warnings.push_back(at + ": the options -o and -s are not applied");
         }
         if (!statement.unknownOption.empty()) {
-            warnings.push_back(at + ": unknown option '" + statement.unknownOption + "' skipped");
+            warnings.push_back(at + ": unknown option " + quote(statement.unknownOption) + " skipped");
         }
         const std::string file = textureFileName(mtlName, statement.file);
         const bool colour = key == "map_Kd" || key == "map_Ke";
@@ -497,8 +498,8 @@ void addTextures(Material& material, const MtlMaterial& source, const std::strin
             material.textures.normal = texture;
             material.textures.normalScale = statement.bumpMultiplier;
         } else {
-            warnings.push_back(at + ": '" + statement.file +
-                               "' holds heights, not normals; bump mapping is not rendered, ignored");
+            warnings.push_back(at + ": " + quote(statement.file) +
+                               " holds heights, not normals; bump mapping is not rendered, ignored");
         }
     }
 }
@@ -665,28 +666,30 @@ MeshData parseObj(const std::string& objText, const std::string& objName,
     return buildMesh(bundle, objText, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report);
 }
 
-std::vector<SceneFile> readObjScene(const std::filesystem::path& path) {
+std::vector<SceneFile> readObjScene(const std::filesystem::path& path, SceneFolder& folder) {
     std::vector<SceneFile> files{{path.filename().string(), readTextFile(path, "scene")}};
-    for (const auto& library : validateObj(files.front().bytes, path.string()).libraries) {
-        const bool read = std::any_of(files.begin(), files.end(),
-                                      [&](const SceneFile& file) { return file.name == library.name; });
+    const auto known = [&](const std::string& name) {
+        return std::any_of(files.begin(), files.end(), [&](const SceneFile& file) { return file.name == name; });
+    };
+    const std::string objName = printable(path.string());
+    for (const auto& library : validateObj(files.front().bytes, objName).libraries) {
+        if (known(library.name)) continue;
         // A missing library is left out: parsing warns and gives its faces the default material.
-        const auto file = path.parent_path() / library.name;
-        if (read || !std::filesystem::is_regular_file(file)) continue;
-        files.push_back({library.name, readTextFile(file, "material library (named by mtllib)")});
+        auto bytes = folder.read(library.name, objName + ":" + std::to_string(library.line) + ": mtllib");
+        if (!bytes) continue;
+        files.push_back({library.name, std::move(*bytes)});
         // Its textures, relative to its folder; a missing one is left out (parsing warns).
         std::vector<MtlMaterial> materials;
         std::string unused;
         std::vector<std::string> warnings;
-        scanMtl(files.back().bytes, file.string(), materials, unused, warnings);
+        const std::string mtlName = printable((path.parent_path() / library.name).string());
+        scanMtl(files.back().bytes, mtlName, materials, unused, warnings);
         for (const MtlMaterial& material : materials) {
-            for (const auto& texture : material.textures) {
-                const std::string name = textureFileName(library.name, texture.statement.file);
-                const auto texturePath = path.parent_path() / name;
-                const bool known = std::any_of(files.begin(), files.end(),
-                                               [&](const SceneFile& f) { return f.name == name; });
-                if (known || !std::filesystem::is_regular_file(texturePath)) continue;
-                files.push_back({name, readTextFile(texturePath, "texture")});
+            for (const auto& [key, statement, line] : material.textures) {
+                const std::string name = textureFileName(library.name, statement.file);
+                if (known(name)) continue;
+                auto texture = folder.read(name, mtlName + ":" + std::to_string(line) + ": " + key);
+                if (texture) files.push_back({name, std::move(*texture)});
             }
         }
     }
@@ -709,8 +712,8 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report, const Scen
         if (!scanned.insert(library.name).second) continue;
         const SceneFile* mtl = bundle.find(library.name);
         if (!mtl) {
-            warnings.push_back(objName + ":" + std::to_string(library.line) + ": material library '" +
-                               library.name + "' is missing; its materials are not defined");
+            warnings.push_back(objName + ":" + std::to_string(library.line) + ": material library " +
+                               quote(library.name) + " is missing; its materials are not defined");
             continue;
         }
         scanMtl(mtl->bytes, bundle.pathOf(library.name), materials, tinyobjMtl, warnings);
@@ -720,7 +723,8 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report, const Scen
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, LoadReport* report) {
-    return parseObjScene(SceneBundle{path, readObjScene(path), std::nullopt, std::nullopt}, report);
+    SceneFolder folder(path, {});
+    return parseObjScene(SceneBundle{path, readObjScene(path, folder), std::nullopt, std::nullopt}, report);
 }
 
 }  // namespace strata

@@ -10,14 +10,16 @@
 #include <vector>
 
 #include "scene/mesh.h"
+#include "scene/scene_folder.h"
 #include "scene/scene_format.h"
 
 namespace strata {
 
-// The format's reading (scene_format.h): `path` and the MTL files its `mtllib` lines name
-// (relative to its folder) that exist. Throws strata::Error naming the file and line of a
-// malformed OBJ line, or a file that is there but cannot be read.
-std::vector<SceneFile> readObjScene(const std::filesystem::path& path);
+// The format's reading (scene_format.h): `path` and, through `folder` (scene_folder.h), the MTL
+// files its `mtllib` lines name and the textures they name (relative to their folders) that
+// exist. Throws strata::Error naming the file and line of a malformed OBJ line, or of a reference
+// that `folder` refuses.
+std::vector<SceneFile> readObjScene(const std::filesystem::path& path, SceneFolder& folder);
 
 // The format's parsing: the bundle's first file as the OBJ and, from the others, the MTL files its
 // `mtllib` lines name; a library not among them is a warning. Fills `triangleNormals` from the vn

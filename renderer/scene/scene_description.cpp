@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
+#include "util/printable.h"
 
 namespace strata {
 namespace {
@@ -87,7 +88,11 @@ bool hasPoseKey(const json& root) {
 }
 
 PointLight readPointLight(const json& entry, const std::string& path) {
-    return {readVec3(entry, "position", path), readVec3(entry, "intensity", path)};
+    const glm::vec3 intensity = readVec3(entry, "intensity", path);
+    if (!(glm::min(glm::min(intensity.x, intensity.y), intensity.z) >= 0.0f)) {
+        throw Error(path + ": a point light's \"intensity\" must be three values >= 0 (W/sr)");
+    }
+    return {readVec3(entry, "position", path), intensity};
 }
 
 // One entry of "lights", read by its "type": a new light type is one more line of the table.
@@ -111,7 +116,7 @@ void readLight(const json& entry, const std::string& path, SceneDescription& des
     for (const auto& [name, read] : kTypes) {
         if (name == type->get<std::string>()) return read(entry, path, description);
     }
-    throw Error(path + ": unknown light type '" + type->get<std::string>() + "' " + knownTypes());
+    throw Error(path + ": unknown light type " + quote(type->get<std::string>()) + " " + knownTypes());
 }
 
 // The array under `key`, when there is one, entry by entry.

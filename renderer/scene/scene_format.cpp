@@ -6,6 +6,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "util/error.h"
+#include "util/printable.h"
 
 namespace strata {
 namespace {
@@ -42,7 +43,7 @@ const SceneFile* SceneBundle::find(std::string_view name) const {
 }
 
 std::string SceneBundle::pathOf(const std::string& name) const {
-    return (path.parent_path() / name).string();
+    return printable((path.parent_path() / name).string());
 }
 
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path) {
@@ -76,25 +77,6 @@ std::string knownSceneExtensions() {
 }
 
 namespace {
-// Every warning as lines of their own, none empty: a loader's message may carry a library's
-// multi-line text or a name read from the file with its control characters.
-void splitIntoLines(std::vector<std::string>& warnings, size_t from) {
-    std::vector<std::string> lines(warnings.begin(), warnings.begin() + static_cast<std::ptrdiff_t>(from));
-    for (size_t i = from; i < warnings.size(); ++i) {
-        size_t start = 0;
-        const std::string& text = warnings[i];
-        while (start <= text.size()) {
-            size_t end = text.find_first_of("\r\n", start);
-            if (end == std::string::npos) end = text.size();
-            if (end > start) lines.push_back(text.substr(start, end - start));
-            start = end + 1;
-        }
-    }
-    warnings = std::move(lines);
-}
-}  // namespace
-
-namespace {
 std::string counted(uint64_t n, const std::string& thing) {
     return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
 }
@@ -119,8 +101,18 @@ ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report, const 
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
     const size_t before = report ? report->warnings.size() : 0;
-    ParsedScene parsed = format.parse(bundle, report, budget);
-    if (report) splitIntoLines(report->warnings, before);
+    // Every message one printable line, whatever a name read from the file or a library's text
+    // holds (each loader quotes names with util/printable.h; this holds for what it misses).
+    const auto line = [](const std::string& message) { return printable(message, message.size()); };
+    ParsedScene parsed;
+    try {
+        parsed = format.parse(bundle, report, budget);
+    } catch (const Error& error) {
+        throw Error(line(error.what()));
+    }
+    if (report) {
+        for (size_t i = before; i < report->warnings.size(); ++i) report->warnings[i] = line(report->warnings[i]);
+    }
     return parsed;
 }
 

@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include "scene/mesh.h"
 #include "scene/model_orientation.h"
+#include "scene/scene_folder.h"
 
 namespace strata {
 
@@ -78,18 +79,24 @@ struct SceneBundle {
     std::optional<SceneFile> description;
     // The --camera file, when one was given, named as given: it need not lie in the folder.
     std::optional<SceneFile> camera;
+    // A line for each file read from outside the main file's folder, as
+    // SceneReadOptions::allowOutsideFiles allows (scene_folder.h); parseScene reports them among
+    // the warnings. Kept where the bundle was read, which is where messages are printed.
+    std::vector<std::string> outsideNotes = {};
 
     // The file of that name among `files`; null when there is none.
     const SceneFile* find(std::string_view name) const;
-    // A file of `files` or the description as messages name it: the main file's folder / name.
+    // A file of `files` or the description as messages name it: the main file's folder / name,
+    // printable (util/printable.h).
     std::string pathOf(const std::string& name) const;
 };
 
 struct SceneFormat {
     std::vector<std::string_view> extensions;  // lower case, with the dot
-    // The main file (`path`, which exists) and every file it refers to; throws strata::Error
-    // naming a missing or malformed file.
-    std::vector<SceneFile> (*read)(const std::filesystem::path& path);
+    // The main file (`path`, which exists) and every file it refers to, read through `folder`
+    // (scene_folder.h: the main file's folder, which refuses references that leave it); throws
+    // strata::Error naming a missing or malformed file or a refused reference.
+    std::vector<SceneFile> (*read)(const std::filesystem::path& path, SceneFolder& folder);
     // The mesh (and camera) from a bundle's files; throws strata::Error naming the file (and line),
     // or the budget the scene exceeds (before reading its geometry).
     ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget);

@@ -7,6 +7,7 @@
 #include "scene/default_camera.h"
 #include "scene/scene_description.h"
 #include "util/error.h"
+#include "util/printable.h"
 #include "util/text_file.h"
 
 namespace strata {
@@ -38,43 +39,47 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
 }  // namespace
 
 SceneBundle readSceneBundle(const std::filesystem::path& path,
-                            const std::optional<std::filesystem::path>& cameraPath) {
-    if (std::filesystem::is_directory(path)) {
-        throw Error(path.string() + ": is a folder, not a scene file (give one of its " + knownSceneExtensions() +
-                    " files)");
+                            const std::optional<std::filesystem::path>& cameraPath,
+                            const SceneReadOptions& options) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        throw Error(printable(path.string()) + ": is a folder, not a scene file (give one of its " +
+                    knownSceneExtensions() + " files)");
     }
-    if (!std::filesystem::is_regular_file(path)) {
-        throw Error(path.string() + ": no such scene file");
+    if (fileKindOf(path) != FileKind::Regular) {
+        throw Error(printable(path.string()) + ": no such scene file");
     }
-    SceneBundle bundle{path, sceneFormatOf(path).read(path), std::nullopt, std::nullopt};
+    SceneFolder folder(path, options);
+    SceneBundle bundle{path, sceneFormatOf(path).read(path, folder), std::nullopt, std::nullopt};
     const auto sidecar = std::filesystem::path(path).replace_extension(".json");
     // --camera naming the description itself: read once, or its point lights would count twice.
     const bool cameraIsSidecar = cameraPath && sameFile(*cameraPath, sidecar);
-    if (std::filesystem::is_regular_file(sidecar)) {
-        SceneFile description{sidecar.filename().string(), readTextFile(sidecar, "scene description")};
+    const std::string mainName = printable(path.string());
+    if (auto bytes = folder.read(sidecar.filename().string(), mainName + ": scene description")) {
+        SceneFile description{sidecar.filename().string(), std::move(*bytes)};
         const std::string name = bundle.pathOf(description.name);
         if (cameraIsSidecar) parseCameraFile(description.bytes, name);  // its camera is required
         for (const std::string& file : parseSceneDescription(description.bytes, name).files) {
             if (bundle.find(file)) continue;
-            bundle.files.push_back({file, readTextFile(path.parent_path() / file,
-                                                       "file (named by " + name + ")")});
+            bundle.files.push_back({file, folder.require(file, name + ": \"environment\" file")});
         }
         bundle.description = std::move(description);
     }
     if (cameraPath && !cameraIsSidecar) {
         bundle.camera = SceneFile{cameraPath->string(), readTextFile(*cameraPath, "camera file")};
     }
+    bundle.outsideNotes = folder.outsideNotes();
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget,
-                       const std::function<void(ParseStage)>& onStage) {
-    if (onStage) onStage(ParseStage::Parsing);
-    LoadReport report;
-    ParsedScene parsed = parseSceneFile(bundle, &report, budget);
-    MeshData& mesh = parsed.mesh;
+SceneContents parseSceneContents(const SceneBundle& bundle, const SceneBudget& budget) {
+    SceneContents contents;
+    LoadReport& report = contents.report;
+    contents.parsed = parseSceneFile(bundle, &report, budget);
+    report.warnings.insert(report.warnings.end(), bundle.outsideNotes.begin(), bundle.outsideNotes.end());
+    MeshData& mesh = contents.parsed.mesh;
     if (mesh.triangles.empty()) {
-        throw Error(bundle.path.string() + ": the scene has no usable triangles");
+        throw Error(printable(bundle.path.string()) + ": the scene has no usable triangles");
     }
     SceneDescription description;
     if (bundle.description) {
@@ -84,25 +89,36 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudge
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
     mesh.environment = describedEnvironment(description, bundle, report);
-    CameraSettings settings = description.camera;
-    bool posed = description.hasPose;
+    contents.settings = description.camera;
+    contents.posed = description.hasPose;
     if (bundle.camera) {
         const SceneDescription cameraFile = parseCameraFile(bundle.camera->bytes, bundle.camera->name);
-        settings = cameraFile.camera;
-        posed = true;
+        contents.settings = cameraFile.camera;
+        contents.posed = true;
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
+    return contents;
+}
+
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget,
+                       const std::function<void(ParseStage)>& onStage) {
+    if (onStage) onStage(ParseStage::Parsing);
+    SceneContents contents = parseSceneContents(bundle, budget);
     if (onStage) onStage(ParseStage::Building);
-    Scene scene(std::move(mesh), traversal);
+    Scene scene(std::move(contents.parsed.mesh), traversal);
+    CameraSettings& settings = contents.settings;
     // The mesh as the scene keeps it: its triangles turned to agree with their normals.
-    if (!posed) settings.pose = parsed.camera ? *parsed.camera : defaultCameraPose(scene.mesh(), parsed.orientation);
-    return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
+    if (!contents.posed) {
+        settings.pose = contents.parsed.camera ? *contents.parsed.camera
+                                               : defaultCameraPose(scene.mesh(), contents.parsed.orientation);
+    }
+    return LoadedScene{std::move(scene), settings, std::move(contents.report), std::move(bundle)};
 }
 
 LoadedScene loadScene(const std::filesystem::path& path,
-                      const std::optional<std::filesystem::path>& cameraPath) {
-    return parseScene(readSceneBundle(path, cameraPath));
+                      const std::optional<std::filesystem::path>& cameraPath, const SceneReadOptions& options) {
+    return parseScene(readSceneBundle(path, cameraPath, options));
 }
 
 std::string describeScene(const LoadedScene& loaded) {

@@ -15,6 +15,17 @@
 
 namespace strata {
 
+// A texture's texels made finite and non-negative, as every texture Strata renders holds them
+// (colours, emission, coverage, roughness and metallic, normal maps encoded in 0..1): NaN and
+// negative values read as 0, +inf as the texture's largest finite value. An EXR file can hold any float,
+// and one NaN or negative texel of an emitter would turn the image black or negative.
+struct FiniteTexture {
+    std::shared_ptr<const Texture> texture;  // null when every value was already so
+    size_t changed = 0;                      // the values changed
+    size_t values = 0;                       // of all the texture's values
+};
+FiniteTexture finiteNonNegative(const Texture& texture);
+
 class SceneTextures {
 public:
     // `warnings` receives one line per texture that cannot be used; both outlive this.
@@ -25,6 +36,8 @@ public:
     // missing or unreadable, with a warning that starts with `where` ("spider.mtl:10: map_Kd").
     std::shared_ptr<const Texture> file(const std::string& name, TextureEncoding encoding, const std::string& where);
     // The same for bytes the scene file holds itself; `key` names them (uniquely) in the cache.
+    // An EXR texture's texels are made finite and non-negative (finiteNonNegative), with a
+    // warning naming it and how many were not.
     std::shared_ptr<const Texture> bytes(const std::string& key, std::string_view data, TextureEncoding encoding,
                                          const std::string& where);
 

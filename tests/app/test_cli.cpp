@@ -305,6 +305,31 @@ TEST_CASE("cli: the load summary names the triangle test; --watertight forces th
     CHECK(std::abs(nlohmann::json::parse(forced.out)["mean_rgb"][0].get<double>() - 1.875) < 0.01 * 1.875);
 }
 
+TEST_CASE("cli: a texture outside the scene's folder is refused; --allow-outside-files reads it in render and view") {
+    const test::ScratchDir dir = test::scratchDir("cli-outside");
+    std::filesystem::create_directories(dir / "model");
+    std::ofstream(dir / "model" / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\nvt 1 0\n"
+                                              "vt 1 1\nvt 0 1\nusemtl lamp\nf 1/1 3/3 2/2\nf 1/1 4/4 3/3\n";
+    std::ofstream(dir / "model" / "s.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Ke ../glow.tga\n";
+    // An 8-bit grey 1x1 TGA: the texture that must not be read without the option.
+    std::ofstream(dir / "glow.tga", std::ios::binary) << std::string("\0\0\3\0\0\0\0\0\0\0\0\0\1\0\1\0\x08\0\x80", 19);
+    const std::string scene = (dir / "model" / "s.obj").string();
+    const auto refused = test::runStrata("render " + scene + " --spp 24 --width 4 --height 4 --out " +
+                                         (dir / "o.exr").string());
+    CHECK(refused.exitCode == 1);
+    CHECK(refused.err.find("s.mtl:4: map_Ke '../glow.tga' resolves outside the model's folder (") != std::string::npos);
+    CHECK(refused.err.find("); --allow-outside-files reads it") != std::string::npos);
+    const std::string note = "s.mtl:4: map_Ke '../glow.tga' is outside the model's folder";
+    const auto rendered = test::runStrata("render " + scene + " --allow-outside-files --spp 24 --width 4 --height 4 --out " +
+                                          (dir / "o.exr").string());
+    CHECK(rendered.exitCode == 0);
+    CHECK(rendered.err.find(note) != std::string::npos);
+    if (test::kSanitizedBuild) return;  // the viewer's Mesa leaks stop a sanitized child
+    const auto viewed = test::runStrata("view " + scene + " --headless=osmesa --frames 1 --window 32 32 --allow-outside-files");
+    CHECK(viewed.exitCode == 0);
+    CHECK(viewed.err.find(note) != std::string::npos);
+}
+
 TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is named with the one meant") {
     const auto dir = test::scratchDir("cli-exit");
     std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 zero\n";

@@ -1,6 +1,7 @@
-// libFuzzer target for the scene loaders (OBJ + MTL + camera JSON, see loader_input.h). Built by
-// -DSTRATA_FUZZ=ON with clang and run by scripts/check.sh fuzz; a finding is copied into
-// tests/fuzz/findings/, which tests/scene/test_fuzz_regressions.cpp replays in every build.
+// libFuzzer target for the scene loaders (OBJ, MTL, description JSON, glTF or GLB, a texture and an
+// EXR environment in one input, see loader_input.h). Built by -DSTRATA_FUZZ=ON with clang and run by
+// scripts/check.sh fuzz; a finding is copied into tests/fuzz/findings/, which
+// tests/scene/test_fuzz_regressions.cpp replays in every build.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

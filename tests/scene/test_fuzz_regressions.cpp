@@ -6,10 +6,12 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "fuzz/loader_input.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_description.h"
+#include "scene/scene_format.h"
 #include "util/error.h"
 #include "test_support.h"
 
@@ -56,4 +58,24 @@ TEST_CASE("fuzz regressions: a JSON number beyond double range is a scene-descri
     // Finding crash-4633922f: nlohmann threw out_of_range, not parse_error, and it escaped.
     CHECK_THROWS_WITH_AS(parseSceneDescription("{\"fov_y\": 1e395}", "big.json"),
                          "big.json: invalid JSON: number overflow parsing '1e395'", Error);
+}
+
+TEST_CASE("fuzz regressions: a binary glTF whose BIN chunk claims its header's 8 bytes as data is refused") {
+    // Finding crash-glb-bin-chunk-over-read (376 bytes): tinygltf 2.7 copied the buffer from 8 bytes
+    // past the end of the file (AddressSanitizer: heap-buffer-overflow); a Release build rendered it.
+    const std::string finding = test::fileBytes(test::sourceDir() / "tests/fuzz/findings/crash-glb-bin-chunk-over-read");
+    std::string_view input = finding;  // the glTF part, the 4th
+    for (int part = 0; part < 3; ++part) input.remove_prefix(input.find(fuzz::kPartSeparator) + fuzz::kPartSeparator.size());
+    const std::string glb(input.substr(0, input.find(fuzz::kPartSeparator)));
+    REQUIRE(glb.size() == 376);
+    const SceneBundle bundle{"mem/over-read.glb", {{"over-read.glb", glb}}, std::nullopt, std::nullopt};
+    CHECK_THROWS_WITH_AS(parseSceneFile(bundle), "mem/over-read.glb: binary glTF chunk 1 claims 296 bytes, 288 are left",
+                         Error);
+    // The header's own length, and a chunk header cut short, are checked too.
+    std::string longer = glb;
+    longer[8] = static_cast<char>(static_cast<unsigned char>(longer[8]) + 4);
+    CHECK_THROWS_WITH_AS(parseSceneFile({"mem/x.glb", {{"x.glb", longer}}, std::nullopt, std::nullopt}),
+                         "mem/x.glb: the binary glTF header gives a length of 380 bytes, the file has 376", Error);
+    CHECK_THROWS_WITH_AS(parseSceneFile({"mem/x.glb", {{"x.glb", glb.substr(0, 16)}}, std::nullopt, std::nullopt}),
+                         "mem/x.glb: the binary glTF header gives a length of 376 bytes, the file has 16", Error);
 }

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
+#include "io/image_io.h"
 #include "materials/material_table.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
@@ -442,7 +443,8 @@ TEST_CASE("gltf: reading gathers the buffers and images a .gltf names, parsing u
     std::ofstream(dir / "s.gltf") << doc.dump();
     std::ofstream(dir / "data files" / "tri.bin", std::ios::binary) << model.bin;
     std::ofstream(dir / "tex.png") << "not decoded";
-    const std::vector<SceneFile> files = readGltfScene(dir / "s.gltf");
+    SceneFolder folder(dir / "s.gltf", {});
+    const std::vector<SceneFile> files = readGltfScene(dir / "s.gltf", folder);
     REQUIRE(files.size() == 3);
     CHECK(files[0].name == "s.gltf");
     CHECK(files[1].name == "data files/tri.bin");
@@ -452,7 +454,7 @@ TEST_CASE("gltf: reading gathers the buffers and images a .gltf names, parsing u
     const SceneBundle elsewhere{"other/host/s.gltf", files, std::nullopt, std::nullopt};
     std::filesystem::remove_all(dir / "data files");
     CHECK(parseGltfScene(elsewhere).mesh.triangles.size() == 1);
-    CHECK_THROWS_WITH_AS(readGltfScene(dir / "s.gltf"),
+    CHECK_THROWS_WITH_AS(readGltfScene(dir / "s.gltf", folder),
                          ((dir / "s.gltf").string() + ": File not found : data files/tri.bin").c_str(), Error);
 }
 
@@ -544,6 +546,90 @@ TEST_CASE("gltf: assimp's glTF 2.0 test models load or fail with one line naming
     CHECK(engine.scene.summary().placedTriangles == 110336);
     CHECK(engine.scene.summary().triangles == 65311);
     CHECK(engine.report.droppedTriangles == 11160);
+}
+
+TEST_CASE("gltf: strengths, intensities and scales are checked as the floats they become") {
+    // 1e300 is a finite double and an infinite float: emission and light once rendered black.
+    Model lamp;
+    lamp.meshNode({{"attributes", {{"POSITION", lamp.positions(kTriangle)}}}, {"material", 0}});
+    lamp.doc["materials"] = json::array(
+        {{{"emissiveFactor", {1, 1, 1}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e300}}}}}}});
+    CHECK(errorOf(lamp.gltf()) == "mem/model.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range");
+    // Finite as a float, it stands.
+    lamp.doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e30;
+    CHECK(parse(lamp.gltf()).mesh.materials[0].emission == glm::vec3(1e30f));
+
+    Model light;
+    light.meshNode({{"attributes", {{"POSITION", light.positions(kTriangle)}}}});
+    light.doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({{{"type", "point"}, {"intensity", 1e300}}});
+    light.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"color", {1e20, 0, 0}}, {"intensity", 1e20}};
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"intensity", 1}};
+    light.doc["nodes"][1]["translation"] = {1e300, 0, 0};
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): its node's position is beyond float range");
+
+    Model bumpy;
+    bumpy.meshNode({{"attributes", {{"POSITION", bumpy.positions(kTriangle)}}}, {"material", 0}});
+    bumpy.doc["images"] = json::array({{{"uri", "gone.png"}}});
+    bumpy.doc["textures"] = json::array({{{"source", 0}}});
+    bumpy.doc["materials"] = json::array({{{"normalTexture", {{"index", 0}, {"scale", 1e300}}}}});
+    CHECK(errorOf(bumpy.gltf()) == "mem/model.gltf: material '' (0): normalTexture scale is beyond float range");
+
+    Model camera;
+    camera.meshNode({{"attributes", {{"POSITION", camera.positions(kTriangle)}}}});
+    camera.doc["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}});
+    camera.addNode({{"camera", 0}, {"translation", {0, 0, 1e300}}});
+    LoadReport report;
+    CHECK(!parse(camera.gltf(), &report).camera);
+    CHECK(report.warnings ==
+          std::vector<std::string>{"mem/model.gltf: camera 0 is beyond float range (the scene is framed instead)"});
+}
+
+TEST_CASE("gltf: messages quote names with their control characters escaped and data: URIs cut short") {
+    Model model;
+    model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}, {"material", 0}});
+    model.doc["materials"] = json::array({{{"name", "\x1b[2J\nred"}, {"emissiveFactor", {2, 0, 0}}}});
+    CHECK(errorOf(model.gltf()) == "mem/model.gltf: material '\\x1b[2J\\nred' (0): emissiveFactor needs 3 numbers in 0..1");
+    model.doc["materials"][0]["emissiveFactor"] = {1, 0, 0};
+    model.doc["images"] = json::array({{{"uri", "gone\r.png"}}});
+    model.doc["textures"] = json::array({{{"source", 0}}});
+    model.doc["materials"][0]["emissiveTexture"] = {{"index", 0}};
+    LoadReport report;
+    parse(model.gltf(), &report);
+    CHECK(report.warnings == std::vector<std::string>{"mem/model.gltf: material '\\x1b[2J\\nred' (0) emissiveTexture: "
+                                                      "image 'gone\\r.png' is missing; using the factor alone"});
+    // A data: URI that does not decode: tinygltf quotes it whole, the message does not.
+    json broken = model.doc;
+    broken["buffers"] = json::array({{{"byteLength", 36},
+                                      {"uri", "data:application/octet-stream;base64," + std::string(50000, '!')}}});
+    CHECK(errorOf(broken.dump()) ==
+          "mem/model.gltf: Failed to decode 'uri' : data:application/octet-stream;base64,... (50037 bytes) in Buffer");
+}
+
+TEST_CASE("gltf: an EXR emissiveTexture's NaN, infinite and negative texels are a warning and read as 0 or its largest") {
+    const test::ScratchDir dir = test::scratchDir("gltf-exr-emission");
+    const float nan = std::nanf("");
+    writeImage(dir / "glow.exr",
+               Image{2, 2, {{1.0f, 0.5f, 0.25f}, {nan, 1.0f, 1.0f}, {INFINITY, -INFINITY, 0.0f}, {-5.0f, 2.0f, 3.0f}}});
+    Model model;
+    model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}, {"material", 0}});
+    model.doc["images"] = json::array({{{"uri", "glow.exr"}}});
+    model.doc["textures"] = json::array({{{"source", 0}}});
+    model.doc["materials"] = json::array({{{"emissiveFactor", {1, 1, 1}}, {"emissiveTexture", {{"index", 0}}}}});
+    SceneBundle bundle = bundleOf(model.gltf());
+    bundle.files.push_back({"glow.exr", test::fileBytes(dir / "glow.exr")});
+    LoadReport report;
+    const MeshData mesh = parseGltfScene(bundle, &report).mesh;
+    CHECK(report.warnings == std::vector<std::string>{
+                                 "mem/model.gltf: material '' (0) emissiveTexture: 'glow.exr': 4 of 12 texel values are "
+                                 "NaN, infinite or negative; read as 0, or as the texture's largest finite value for +inf"});
+    const Texture& glow = *mesh.materials[0].textures.emission;
+    CHECK(glm::vec3(glow.texel(0, 0)) == glm::vec3(1.0f, 0.5f, 0.25f));
+    CHECK(glm::vec3(glow.texel(1, 0)) == glm::vec3(0.0f, 1.0f, 1.0f));
+    CHECK(glm::vec3(glow.texel(0, 1)) == glm::vec3(3.0f, 0.0f, 0.0f));
+    CHECK(glm::vec3(glow.texel(1, 1)) == glm::vec3(0.0f, 2.0f, 3.0f));
 }
 
 TEST_CASE("gltf: the triangle budget counts stored triangles and instances from the accessors, before reading them") {

@@ -266,7 +266,8 @@ TEST_CASE("obj: files on disk, a missing MTL is a warning naming it and its line
     std::ofstream(dir / "b.obj") << "# b\nmtllib gone.mtl a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl white\nf 1 2 3\n"
                                     "mtllib\nusemtl lost\nf 1 2 3\n";
     // Reading leaves the missing library out rather than failing.
-    const auto files = readObjScene(dir / "b.obj");
+    SceneFolder folder(dir / "b.obj", {});
+    const auto files = readObjScene(dir / "b.obj", folder);
     REQUIRE(files.size() == 2);
     CHECK(files[1].name == "a.mtl");
     LoadReport report;

@@ -3,13 +3,16 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
 #include <stb_image_write.h>
 
+#include "io/image_io.h"
 #include "io/texture_image.h"
 #include "scene/scene_loader.h"
+#include "util/error.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -112,4 +115,43 @@ TEST_CASE("a bump map whose values are normals is read as a normal map") {
     const Material& m = loaded.scene.mesh().materials[0];
     REQUIRE(m.textures.normal);
     CHECK(m.textures.normalScale == 0.5f);
+}
+
+TEST_CASE("an EXR map_Ke's NaN, infinite and negative texels are a warning, and the quad emits finite radiance >= 0") {
+    const test::ScratchDir dir = test::scratchDir("obj_exr_emission");
+    writeFile(dir / "quad.obj", kQuadObj);
+    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Ke glow.exr\n");
+    // Top row (1, 0.5, 0.25), (NaN, 1, 1); bottom row (inf, -inf, 0), (-5, 2, 3).
+    writeImage(dir / "mtl" / "glow.exr", Image{2, 2, {{1.0f, 0.5f, 0.25f}, {std::nanf(""), 1.0f, 1.0f},
+                                                      {INFINITY, -INFINITY, 0.0f}, {-5.0f, 2.0f, 3.0f}}});
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings == std::vector<std::string>{
+                                        (dir / "mtl" / "quad.mtl").string() +
+                                        ":4: map_Ke: 'mtl/glow.exr': 4 of 12 texel values are NaN, infinite or negative; "
+                                        "read as 0, or as the texture's largest finite value for +inf"});
+    PathIntegratorSettings settings;
+    settings.depth = 0;
+    const PathIntegrator integrator(loaded.scene, settings);
+    const auto seen = [&](float x, float y) {
+        uint64_t rays = 0;
+        return integrator.radiance(Ray{{x, y, 1.0f}, {0.0f, 0.0f, -1.0f}}, PathSamples(1, 0, 0, 0), rays);
+    };
+    // Ke 2 times each texel as read: NaN and negatives as 0, +inf as the largest finite value 3.
+    CHECK(seen(0.25f, 0.75f) == glm::vec3(2.0f, 1.0f, 0.5f));
+    CHECK(seen(0.75f, 0.75f) == glm::vec3(0.0f, 2.0f, 2.0f));
+    CHECK(seen(0.25f, 0.25f) == glm::vec3(6.0f, 0.0f, 0.0f));
+    CHECK(seen(0.75f, 0.25f) == glm::vec3(0.0f, 4.0f, 6.0f));
+}
+
+TEST_CASE("MTL names and words in messages have their control characters escaped") {
+    const test::ScratchDir dir = test::scratchDir("obj_escaped_names");
+    writeFile(dir / "quad.obj", "mtllib mtl/quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl \x1b]0;owned\x07\nf 1 2 3\n");
+    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\n");
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings ==
+          std::vector<std::string>{(dir / "quad.obj").string() +
+                                   ":5: material '\\x1b]0;owned\\x07' is not defined; using grey Kd 0.8"});
+    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 \x1b[2J 0.5\n");
+    CHECK_THROWS_WITH_AS(loadScene(dir / "quad.obj"),
+                         ((dir / "mtl" / "quad.mtl").string() + ":2: '\\x1b[2J' is not a number").c_str(), Error);
 }

@@ -69,6 +69,9 @@ TEST_CASE("scene description: a bad file is named with the problem") {
     CHECK(errorOf(R"({"point_lights":[{"position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
     CHECK(errorOf(R"({"point_lights":{}})") == "s.json: \"point_lights\" must be an array");
     CHECK(errorOf(R"({"point_lights":[3]})") == "s.json: each of \"point_lights\" must be an object");
+    // A negative intensity would give negative radiance.
+    CHECK(errorOf(R"({"lights":[{"type":"point","position":[0,1,0],"intensity":[1,-5,1]}]})") ==
+          "s.json: a point light's \"intensity\" must be three values >= 0 (W/sr)");
 }
 
 TEST_CASE("scene description: a light of an unknown type names the file and the type, and the known ones") {

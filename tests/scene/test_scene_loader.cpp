@@ -188,7 +188,7 @@ TEST_CASE("scene loader: a description's environment file that is missing or not
     const auto dir = test::scratchDir("scene-environment-bad");
     writeSkyScene(dir, R"(,"environment":{"file":"absent.exr"})");
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "s.obj"),
-                         doctest::Contains("absent.exr: cannot open file (named by"), Error);
+                         doctest::Contains("s.json: \"environment\" file 'absent.exr': no such file"), Error);
     writeSkyScene(dir, R"(,"environment":{"file":"s.mtl"})");
     CHECK_THROWS_WITH_AS(loadScene(dir / "s.obj"), doctest::Contains("s.mtl: not a readable EXR file"), Error);
     writeImage(dir / "square.exr", Image{4, 4, std::vector<glm::vec3>(16, glm::vec3(1.0f))});

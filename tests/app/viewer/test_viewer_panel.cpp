@@ -190,6 +190,40 @@ TEST_CASE("a scene file of a registered extension, in any case, opens in place o
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
 
+TEST_CASE("a scene opened with a file outside its folder is refused naming the option; allowed, it says so") {
+    const auto dir = test::scratchDir("viewer-outside-files");
+    std::filesystem::create_directories(dir / "model");
+    std::ofstream(dir / "model" / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n"
+                                              "usemtl m\nf 1/1 2/1 3/1 4/1\n";
+    std::ofstream(dir / "model" / "s.mtl") << "newmtl m\nKd 1 1 1\nmap_Kd ../grey.tga\n";
+    // An 8-bit grey 1x1 TGA.
+    std::ofstream(dir / "grey.tga", std::ios::binary) << std::string("\0\0\3\0\0\0\0\0\0\0\0\0\1\0\1\0\x08\0\x80", 19);
+    const std::string reference = (dir / "model" / "s.mtl").string() + ":3: map_Kd '../grey.tga'";
+    const std::string folder = " the model's folder (" + std::filesystem::canonical(dir / "model").string() + ")";
+
+    {  // one viewer (one ImGui context) at a time
+        Harness refusing(smallSingleView());
+        const auto before = refusing.viewer.workerConfig().scene;
+        refusing.viewer.openScene(dir / "model" / "s.obj");
+        refusing.settle();
+        CHECK(refusing.viewer.workerConfig().scene == before);
+        CHECK(refusing.viewer.panel().message() == "cannot open scene: " + reference + " resolves outside" +
+                                                       folder + "; --allow-outside-files reads it");
+    }
+    ViewerSettings allowing = smallSingleView();
+    allowing.files.allowOutsideFiles = true;
+    Harness h(allowing);
+    h.viewer.openScene(dir / "model" / "s.obj");
+    h.settle();
+    CHECK(h.viewer.workerConfig().scene->scene.summary().triangles == 2);
+    const std::string message = h.viewer.panel().message();
+    CHECK(message.rfind("opened " + (dir / "model" / "s.obj").string() + " in ", 0) == 0);
+    CHECK(message.find(" (warnings on stderr: 1)") != std::string::npos);
+    CHECK(h.viewer.panel().sceneNote() == "read 1 file outside the scene's folder, as --allow-outside-files lets it");
+    CHECK(h.viewer.panel().sceneWarnings().find(reference + " is outside" + folder +
+                                                 "; read as --allow-outside-files allows") != std::string::npos);
+}
+
 // A grey quad that emits nothing: lit only by its environment.
 std::filesystem::path writeUnlitQuad(const std::filesystem::path& dir) {
     std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl grey\nf 1 2 3 4\n";
