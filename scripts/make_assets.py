@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the bundled scenes in assets/ (run from the repository root; output is committed).
+"""Writes the bundled scenes in assets/ and the test scenes in tests/data/ (run from the
+repository root; output is committed).
 
 cornell/  The Cornell box from the published Cornell measurements (units: mm): the room, the
           two blocks, and the 130 x 105 mm ceiling light, lowered 0.8 mm so it does not share
@@ -12,6 +13,10 @@ glossy/   Three Cook-Torrance spheres (gold metal, red plastic, rough copper) on
           floor before a matte wall, under a tilted softbox and a warm strip light (units: m).
           Ks is the Fresnel F0, Pr the roughness (GGX alpha = Pr^2). The spheres are flat-faceted
           icospheres (the renderer uses geometric normals), fine enough for smooth highlights.
+tests/data/cornell_point/  The Cornell box's room and blocks without the area light, lit by one
+          point light just under the ceiling's centre (in its description, W/sr in mm units): the
+          Cornell light's colour, about the irradiance that light gives the floor below it. A scene
+          whose light has no radiance bound (K_eps) and that only next-event estimation lights.
 Every polygon is written counter-clockwise as seen from the side it faces (its front).
 """
 import json
@@ -79,7 +84,15 @@ def block(top):
     return [facing(f, sub(centroid(f), middle)) for f in faces]  # outward
 
 
-def cornell():
+CORNELL_CAMERA = {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
+                  "fov_y": 39.3077}
+CORNELL_MATERIALS = [("white", [("Kd", [0.725, 0.71, 0.68])]),
+                     ("red", [("Kd", [0.63, 0.065, 0.05])]),
+                     ("green", [("Kd", [0.14, 0.45, 0.091])])]
+
+
+def cornell_room():
+    """The Cornell box's walls and blocks, without its light."""
     inside = [278.0, 274.4, 279.6]
     room = {
         "floor": [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]],
@@ -95,6 +108,11 @@ def cornell():
                    block([[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]])))
     groups.append(("tall_block", "white",
                    block([[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]])))
+    return groups
+
+
+def cornell():
+    groups = cornell_room()
     light = [[343, 548.0, 227], [343, 548.0, 332], [213, 548.0, 332], [213, 548.0, 227]]
     groups.append(("light", "light", [facing(light, [0, -1, 0])]))
     write_obj("assets/cornell/cornell.obj",
@@ -103,13 +121,24 @@ def cornell():
               groups)
     write_mtl("assets/cornell/cornell.mtl",
               ["Albedos: RGB reductions of the measured reflectance spectra. Light: Ke = radiance."],
-              [("white", [("Kd", [0.725, 0.71, 0.68])]),
-               ("red", [("Kd", [0.63, 0.065, 0.05])]),
-               ("green", [("Kd", [0.14, 0.45, 0.091])]),
-               ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])])
-    write_json("assets/cornell/cornell.json",
-               {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
-                "fov_y": 39.3077, "width": 512, "height": 512})
+              CORNELL_MATERIALS + [("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])])
+    write_json("assets/cornell/cornell.json", {**CORNELL_CAMERA, "width": 512, "height": 512})
+
+
+def cornell_point():
+    # Irradiance under the area light, about Le A / d^2 = 17 * 130 * 105 / 548^2 = 0.77 in red;
+    # the point light gives I / d^2 at d = 540 mm, so I = 13000 * (17, 12, 4) W/sr.
+    os.makedirs("tests/data/cornell_point", exist_ok=True)
+    write_obj("tests/data/cornell_point/cornell_point.obj",
+              ["The Cornell box's room and blocks (mm) without the area light: the point light of",
+               "cornell_point.json lights it. Counter-clockwise = front. Kd: Lambertian albedo."],
+              cornell_room())
+    write_mtl("tests/data/cornell_point/cornell_point.mtl",
+              ["Albedos: RGB reductions of the measured reflectance spectra."], CORNELL_MATERIALS)
+    write_json("tests/data/cornell_point/cornell_point.json",
+               {**CORNELL_CAMERA, "width": 64, "height": 64,
+                "lights": [{"type": "point", "position": [278, 540, 279.6],
+                            "intensity": [221000, 156000, 52000]}]})
 
 
 def icosphere(subdivisions):
@@ -209,5 +238,6 @@ def glossy():
 
 if __name__ == "__main__":
     cornell()
+    cornell_point()
     furnace()
     glossy()

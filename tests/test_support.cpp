@@ -14,7 +14,15 @@
 namespace strata::test {
 
 std::filesystem::path sourceDir() { return STRATA_SOURCE_DIR; }
-std::filesystem::path sharedDir() { return STRATA_SHARED_DIR; }
+std::filesystem::path testScene(const std::string& name) {
+    return sourceDir() / "tests" / "data" / name / (name + ".obj");
+}
+
+std::optional<std::filesystem::path> sharedDir() {
+    const std::filesystem::path shared = STRATA_SHARED_DIR;
+    if (!std::filesystem::is_directory(shared)) return std::nullopt;
+    return shared;
+}
 
 ScratchDir::~ScratchDir() {
     std::error_code ignored;  // a destructor must not throw; a leftover folder is harmless

@@ -3,6 +3,7 @@
 // the statistics that turn "close enough" into k standard errors.
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,7 +33,12 @@ inline constexpr bool kSanitizedBuild = false;
 #endif
 
 std::filesystem::path sourceDir();
-std::filesystem::path sharedDir();
+// The scene the suite keeps in tests/data/NAME/NAME.obj (scripts/make_assets.py writes them).
+std::filesystem::path testScene(const std::string& name);
+// The optional shared collection beside the checkout (../shared), when it is there: a test that
+// reads it says it is skipped without it (MESSAGE) and passes; every scene a test needs is in the
+// repository.
+std::optional<std::filesystem::path> sharedDir();
 // A fresh empty folder for one test's files, removed with everything in it when the test's
 // handle goes out of scope, so runs do not pile up folders in the temp directory. It is a path,
 // so `dir / "file"` and every function taking a path accept it.
