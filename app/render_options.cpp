@@ -8,6 +8,7 @@
 #include "bundled_assets.h"
 #include "util/error.h"
 #include "integrator/truncation.h"
+#include "io/image_io.h"
 
 namespace strata {
 
@@ -90,17 +91,17 @@ std::vector<std::string> RenderOptions::arguments() const {
 RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
-    if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
-    if (depth < 0 || depth > 100000) throw Error("--depth: must be in 0..100000");
-    if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
+    if (!kind) throw UsageError("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
+    if (depth < 0 || depth > 100000) throw UsageError("--depth: must be in 0..100000");
+    if (threads < 0 || threads > 1024) throw UsageError("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     if (epsilon) {
-        if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
+        if (!(*epsilon > 0.0)) throw UsageError("--epsilon: must be positive");
         TruncationChoice choice{};
         try {
             choice = chooseSceneTruncationDepth(*epsilon, scene);
         } catch (const Error& e) {
-            throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
+            throw UsageError(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
@@ -109,12 +110,12 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
-    if (rouletteDepth < -1) throw Error("--roulette-depth: must be -1 (off) or at least 0");
+    if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
     settings.threads = threads;
     if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
-        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+        throw UsageError("--noise-threshold: must be in 0..10 (0: off)");
     }
     settings.adaptive.threshold = noiseThreshold;
     return settings;
@@ -123,49 +124,62 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
 SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneBundle(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
-                                   cameraPath);
+    SceneBundle bundle = strata::readSceneBundle(
+        scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene), cameraPath);
+    if (!env.empty() && env != "none") bundle.environmentMap = SceneFile{env, readExrFile(env)};
+    return bundle;
 }
 
-Environment RenderOptions::environment() const {
-    if (!std::isfinite(envRotate)) throw Error("--env-rotate: must be a finite angle in degrees");
+namespace {
+
+// The environment `options` give, its map decoded from `files`; a note on the map to `warnings`.
+Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
+                               std::vector<std::string>& warnings) {
+    if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
-    if (!envColor.empty()) {
-        for (float c : envColor) {
+    if (!options.envColor.empty()) {
+        for (float c : options.envColor) {
             if (!(std::isfinite(c) && c >= 0.0f)) {
-                throw Error("--env-color: must be three finite radiances >= 0");
+                throw UsageError("--env-color: must be three finite radiances >= 0");
             }
         }
         environment.kind = Environment::Kind::Uniform;
-        environment.radiance = glm::vec3(envColor[0], envColor[1], envColor[2]);
-    } else if (env == "none") {
+        environment.radiance = glm::vec3(options.envColor[0], options.envColor[1], options.envColor[2]);
+    } else if (options.env == "none") {
         environment.kind = Environment::Kind::None;
-    } else if (!env.empty()) {
+    } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
-        const EnvironmentMapFile file = readEnvironmentMap(env);
+        const SceneFile& map = *files.environmentMap;
+        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name);
         if (file.zeroedNegatives > 0) {
-            std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
-                         env.c_str(), file.zeroedNegatives);
+            warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
+                               " slightly negative texel components (lossy compression) read as 0");
         }
         environment.map = file.map;
-        environment.rotationDegrees = envRotate;
+        environment.rotationDegrees = options.envRotate;
     }
     return environment;
 }
 
-LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
+}  // namespace
+
+LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+    std::vector<std::string> warnings;
+    const Environment given = optionsEnvironment(*this, files, warnings);
     LoadedScene loaded =
         strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic);
+    loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
     // The --env options override the scene description's environment; without them it stands.
-    if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
+    if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
+    if (environment) *environment = given;
     return loaded;
 }
 
-LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle(), environment()); }
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
-    if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");
-    if (height && (*height < 1 || *height > 65536)) throw Error("--height: must be in 1..65536");
+    if (width && (*width < 1 || *width > 65536)) throw UsageError("--width: must be in 1..65536");
+    if (height && (*height < 1 || *height > 65536)) throw UsageError("--height: must be in 1..65536");
     return Camera(loaded.settings.pose, width.value_or(loaded.settings.width),
                   height.value_or(loaded.settings.height));
 }

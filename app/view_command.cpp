@@ -7,6 +7,7 @@
 
 #include "util/error.h"
 #include "render_options.h"
+#include "usage.h"
 #include "viewer_run.h"
 
 namespace strata {
@@ -31,23 +32,25 @@ struct ViewCommand {
 };
 
 void ViewCommand::run() const {
-    if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (targetSpp < 0) throw UsageError("--target-spp: must be at least 0 (0: no limit)");
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
-        throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
+        throw UsageError("--target-seconds: must be in 0..1e7 (0: no limit)");
     }
-    if (frames < 0) throw Error("--frames: must be at least 0");
-    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
+    if (frames < 0) throw UsageError("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
-    if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
-        throw Error("--screenshot: must be a .png file");
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (!screenshot.empty()) {
+        if (frames == 0) throw UsageError("--screenshot needs --frames N");
+        if (checkOutputOption("--screenshot", screenshot) != ImageFormat::Png) {
+            throw UsageError("--screenshot: " + screenshot + ": must be a .png file");
+        }
     }
-    if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
 
-    // Read once: the map lights the first scene and stays in the settings for the scenes opened
-    // after it.
-    const Environment environment = render.environment();
-    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
+    // Decoded once: the map lights the first scene and stays in the settings for the scenes
+    // opened after it.
+    Environment environment;
+    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), &environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
     if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
@@ -84,11 +87,11 @@ void ViewCommand::run() const {
     if (!screenshot.empty()) run.screenshot = screenshot;
     // The image size follows the window; --width/--height set the window when given.
     if (render.width) {
-        if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
+        if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
         run.width = *render.width;
     }
     if (render.height) {
-        if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
+        if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
         run.height = *render.height;
     }
 
@@ -142,7 +145,9 @@ void addViewCommand(CLI::App& app) {
         ->expected(0, 1)
         ->default_str("auto");
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
-    sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
+    sub->add_option("--screenshot", command->screenshot,
+                    "Write the last frame (image + panel) as PNG (.png in any letter case; its folder "
+                    "must exist and be writable)");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
     sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");

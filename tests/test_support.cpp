@@ -68,6 +68,12 @@ CommandResult runStrata(const std::string& arguments) {
     return runCommand(std::string(STRATA_BINARY) + " " + arguments);
 }
 
+std::optional<std::string> obeyingPermissions() {
+    if (geteuid() != 0) return "";
+    if (std::system("command -v setpriv >/dev/null 2>&1") != 0) return std::nullopt;
+    return "setpriv --bounding-set=-dac_override,-dac_read_search ";
+}
+
 MeanEstimate estimateMean(const std::vector<double>& values) {
     double sum = 0.0;
     for (double v : values) sum += v;

@@ -65,6 +65,10 @@ std::string forgedTga();
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);
+// A command-line prefix under which a child obeys file permissions as other users do: empty for
+// them, for root setpriv dropping the capabilities that override them (CAP_DAC_OVERRIDE,
+// CAP_DAC_READ_SEARCH). Empty optional when root has no setpriv.
+std::optional<std::string> obeyingPermissions();
 
 // Mean and standard error of the mean of a sample.
 struct MeanEstimate {

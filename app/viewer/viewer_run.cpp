@@ -131,10 +131,10 @@ void beginOffscreenFrame(int width, int height, float deltaSeconds) {
 ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
                         std::shared_ptr<const Image> reference, const ViewRunOptions& options) {
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384) {
-        throw Error("--window: size must be in 16..16384");
+        throw UsageError("--window: size must be in 16..16384");
     }
     if (options.headless) {
-        if (options.frames <= 0) throw Error("--headless needs --frames N (N > 0)");
+        if (options.frames <= 0) throw UsageError("--headless needs --frames N (N > 0)");
         const auto context = OffscreenContext::create(options.backend);
         FrameTarget target = FrameTarget::offscreen(options.width, options.height);
         ImGuiSession imgui;

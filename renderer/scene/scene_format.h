@@ -50,6 +50,10 @@ struct SceneBundle {
     std::optional<SceneFile> description;
     // The --camera file, when one was given, named as given: it need not lie in the folder.
     std::optional<SceneFile> camera;
+    // The environment map a front end was given in place of the description's (strata's --env),
+    // named as given. parseScene leaves it to that front end, which holds its other settings
+    // (the rotation); it travels here so that every MPI rank decodes the bytes rank 0 read.
+    std::optional<SceneFile> environmentMap = std::nullopt;
 
     // The file of that name among `files`; null when there is none.
     const SceneFile* find(std::string_view name) const;
