@@ -275,7 +275,9 @@ void addBenchCommand(CLI::App& app) {
         "bench", "Measure error against time, and throughput");
     sub->add_option("scenes", command->scenes,
                     "Scenes (.obj); default: the bundled scenes, and ../shared/scenes/*/ when present");
-    sub->add_flag("--quick", command->quick, "Small sizes and budgets (CI smoke run, < 3 min on 2 cores)");
+    sub->add_flag("--quick", command->quick,
+                  "Small sizes and budgets: the CI smoke run, about 40 s of CPU time (under a minute on "
+                  "2 idle cores)");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
     sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();
     sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
