@@ -41,8 +41,9 @@ public:
 
     // Runs `step` on every rank, then all ranks compare notes: when it threw anywhere, every rank
     // throws (rank 0 the failure of the lowest failing rank, named "rank N" when not its own, a
-    // UsageError when that was one; the others ErrorReportedByRankZero), so no rank is left waiting in a later collective call and
-    // the job ends before any output is written. One rank: runs `step`, exceptions pass through.
+    // UsageError when that was one; the others ErrorReportedByRankZero), so no rank is left
+    // waiting in a later collective call and the job ends before any output is written. One
+    // rank: runs `step`, exceptions pass through.
     template <typename Step>
     auto collectively(Step&& step) -> std::invoke_result_t<Step&>;
 

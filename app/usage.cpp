@@ -18,7 +18,8 @@ size_t editDistance(const std::string& a, const std::string& b) {
     for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
         for (size_t j = 1; j <= b.size(); ++j) {
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            const size_t substitution = d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, substitution});
             if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
                 d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
             }
@@ -31,8 +32,8 @@ std::string withoutDashes(const std::string& name) { return name.substr(name.fin
 
 // "-x" or "--xyz", but not a negative number.
 bool looksLikeOption(const std::string& argument) {
-    return argument.size() > 1 && argument[0] == '-' && !std::isdigit(static_cast<unsigned char>(argument[1])) &&
-           argument[1] != '.';
+    return argument.size() > 1 && argument[0] == '-' &&
+           !std::isdigit(static_cast<unsigned char>(argument[1])) && argument[1] != '.';
 }
 
 // Every name `command` takes an option by, with its dashes.
@@ -87,7 +88,8 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
     return message + " " + help;
 }
 
-ImageFormat checkOutputOption(const std::string& option, const std::filesystem::path& path, bool probe) {
+ImageFormat checkOutputOption(const std::string& option, const std::filesystem::path& path,
+                              bool probe) {
     // A folder in the way is named as such, whatever its name's extension.
     if (probe && std::filesystem::is_directory(path)) {
         throw Error(option + ": " + path.string() + ": cannot write: it is a folder");

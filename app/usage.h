@@ -43,6 +43,7 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
 // image format by extension, in any letter case (else strata::UsageError "OPTION: PATH: unknown
 // image format ..."), and when `probe`, that it can be written (else strata::Error
 // "OPTION: PATH: cannot write: ...", io/output_file.h; a folder at PATH is named so first).
-ImageFormat checkOutputOption(const std::string& option, const std::filesystem::path& path, bool probe = true);
+ImageFormat checkOutputOption(const std::string& option, const std::filesystem::path& path,
+                              bool probe = true);
 
 }  // namespace strata

@@ -44,6 +44,12 @@ std::string fileBytes(const std::filesystem::path& path) {
     return bytes.str();
 }
 
+std::set<std::string> folderEntries(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    return names;
+}
+
 std::string forgedTga() {
     std::string tga(18, '\0');
     tga[2] = 10;  // run-length encoded true colour

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +59,8 @@ struct CommandResult {
 };
 // The file's bytes; empty when it cannot be read.
 std::string fileBytes(const std::filesystem::path& path);
+// The names of the folder's entries (to check that nothing was left behind in it).
+std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
 // would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
 std::string forgedTga();

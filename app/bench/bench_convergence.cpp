@@ -106,9 +106,8 @@ void writeRunCsv(const std::filesystem::path& dir, const ConvergenceRun& run) {
                    std::to_string(c.nonFinite)});
     }
     writeFile(dir / ("convergence-" + run.scene + "-" + run.sampler +
-                         (run.variant.empty() ? "" : "-" + run.variant) + "-d" +
-                         std::to_string(run.depth) + ".csv"),
-                  table.csv());
+                     (run.variant.empty() ? "" : "-" + run.variant) + "-d" + std::to_string(run.depth) + ".csv"),
+              table.csv());
 }
 
 void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<ConvergenceRun>& runs) {

@@ -21,9 +21,9 @@
 #include "film/image_metrics.h"
 #include "integrator/progressive_renderer.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
-#include "io/output_file.h"
 
 namespace strata {
 namespace {

@@ -6,7 +6,6 @@
 
 #include "bench/bench_process.h"
 #include "io/output_file.h"
-#include "util/error.h"
 
 namespace strata {
 

@@ -22,12 +22,6 @@ const std::string kRender = "render --width 8 --height 8 --spp 24";
 
 int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
-std::set<std::string> entries(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
-    return names;
-}
-
 }  // namespace
 
 TEST_CASE("render: symlinks planted at every temporary name of its outputs are left alone") {
@@ -78,7 +72,7 @@ TEST_CASE("render: an output that cannot be written fails before rendering, one 
     std::ofstream(dir / "file") << "not a folder";
     const std::string precious = "an earlier render\n";
     std::ofstream(dir / "keep.exr") << precious;
-    const std::set<std::string> before = entries(dir);
+    const std::set<std::string> before = test::folderEntries(dir);
     const struct {
         std::string out;
         int exitStatus;
@@ -101,7 +95,7 @@ TEST_CASE("render: an output that cannot be written fails before rendering, one 
         CHECK(lineCount(result.err) == 1);
         CHECK(result.err == "strata: " + c.expected + "\n");
         CHECK(test::fileBytes(dir / "keep.exr") == precious);
-        CHECK(entries(dir) == before);
+        CHECK(test::folderEntries(dir) == before);
     }
 }
 

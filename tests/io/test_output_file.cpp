@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The names of `dir`'s entries.
-std::set<std::string> entries(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
-    return names;
-}
-
 // What an attacker would plant for a writer of `target` in this process: a symlink at every
 // temporary name it could choose, the older TARGET.tmp-PID and TARGET.tmpPID among them, each to
 // `victim`. Returns their names.
@@ -53,7 +46,7 @@ TEST_CASE("output file: symlinks planted at its temporary names are never writte
     // Only the target is new: the temporary became it.
     std::set<std::string> expected = planted;
     expected.insert({"victim", "out.png", "out.png.tmp-" + std::to_string(getpid()) + "-10"});
-    CHECK(entries(dir) == expected);
+    CHECK(test::folderEntries(dir) == expected);
 }
 
 TEST_CASE("output file: when every temporary name is taken it fails and leaves the target alone") {
@@ -79,7 +72,7 @@ TEST_CASE("output file: the target is replaced only on commit, and a symlink at 
         CHECK(test::fileBytes(target) == "an earlier render");
     }  // never committed: a failure midway
     CHECK(test::fileBytes(target) == "an earlier render");
-    CHECK(entries(dir) == std::set<std::string>{"out.pfm"});
+    CHECK(test::folderEntries(dir) == std::set<std::string>{"out.pfm"});
 
     OutputFile file(target);
     file.write("0123456789");
@@ -88,7 +81,7 @@ TEST_CASE("output file: the target is replaced only on commit, and a symlink at 
     CHECK(file.position() == 4);
     file.commit();
     CHECK(test::fileBytes(target) == "01ab456789");
-    CHECK(entries(dir) == std::set<std::string>{"out.pfm"});
+    CHECK(test::folderEntries(dir) == std::set<std::string>{"out.pfm"});
 
     const auto victim = dir / "victim";
     std::ofstream(victim) << "precious";
@@ -123,5 +116,5 @@ TEST_CASE("output file: a missing, unwritable or wrong folder and a target that 
     }
     CHECK_NOTHROW(requireWritable(dir / "out.png"));
     CHECK(!fs::exists(dir / "out.png"));  // the check leaves nothing behind
-    CHECK(entries(dir) == std::set<std::string>{"file", "folder.png"});
+    CHECK(test::folderEntries(dir) == std::set<std::string>{"file", "folder.png"});
 }
