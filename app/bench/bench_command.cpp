@@ -276,8 +276,7 @@ void addBenchCommand(CLI::App& app) {
     sub->add_option("scenes", command->scenes,
                     "Scenes (.obj); default: the bundled scenes, and ../shared/scenes/*/ when present");
     sub->add_flag("--quick", command->quick,
-                  "Small sizes and budgets: the CI smoke run, about 40 s of CPU time (under a minute on "
-                  "2 idle cores)");
+                  "Small sizes and budgets: the CI smoke run, about 40 s on 2 idle cores");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
     sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();
     sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
