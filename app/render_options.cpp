@@ -51,6 +51,10 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_flag("--watertight", watertight,
                      "Always trace with Embree's watertight triangle test (default: only where the "
                      "scene's rounding gap share needs it)");
+    command.add_option("--max-triangles", maxTriangles,
+                       "Refuse a scene that stores more triangles than this after instancing (a shared "
+                       "mesh's once, each instance counted as 3), before reading its geometry")
+        ->capture_default_str();
 }
 
 std::vector<std::string> RenderOptions::arguments() const {
@@ -85,6 +89,7 @@ std::vector<std::string> RenderOptions::arguments() const {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
     if (watertight) args.push_back("--watertight");
+    if (maxTriangles != defaults.maxTriangles) args.insert(args.end(), {"--max-triangles", std::to_string(maxTriangles)});
     return args;
 }
 
@@ -164,10 +169,11 @@ Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& 
 }  // namespace
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+    if (maxTriangles < 1) throw UsageError("--max-triangles: must be at least 1");
     std::vector<std::string> warnings;
     const Environment given = optionsEnvironment(*this, files, warnings);
-    LoadedScene loaded =
-        strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic);
+    LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
+                                            SceneBudget{maxTriangles});
     loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
     // The --env options override the scene description's environment; without them it stands.
     if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);

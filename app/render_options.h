@@ -33,6 +33,7 @@ struct RenderOptions {
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
+    uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);

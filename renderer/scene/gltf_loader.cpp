@@ -156,7 +156,7 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path) {
     return files;
 }
 
-ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report) {
+ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
     const SceneFile& main = bundle.files.front();
     const std::string path = bundle.pathOf(main.name);
     // tinygltf takes a non-const user pointer; the bundle callbacks only read through it.
@@ -168,7 +168,7 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report) {
     std::vector<std::string> textureWarnings;
     SceneTextures textures(bundle, textureWarnings);
     size_t dropped = 0;
-    ParsedScene parsed = flattenGltfScene(gltf, textures, dropped);
+    ParsedScene parsed = buildGltfScene(gltf, textures, budget, dropped);
     if (report) {
         report->faces = parsed.mesh.triangles.size();
         report->droppedTriangles = dropped;

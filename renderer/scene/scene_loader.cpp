@@ -75,9 +75,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
     LoadReport report;
-    ParsedScene parsed = parseSceneFile(bundle, &report);
+    ParsedScene parsed = parseSceneFile(bundle, &report, budget);
     MeshData& mesh = parsed.mesh;
     if (mesh.triangles.empty()) {
         throw Error(bundle.path.string() + ": the scene has no usable triangles");
@@ -121,9 +121,14 @@ std::string describeScene(const LoadedScene& loaded) {
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
                   loaded.scene.mesh().pointLights.size(), s.watertight ? "watertight" : "fast",
                   s.roundingGapShare, extent.x, extent.y, extent.z);
+    std::string text = line;
+    if (s.placements > 0) {
+        text += ", " + std::to_string(s.placedTriangles) + " triangles placed by " + std::to_string(s.placements) +
+                " instances";
+    }
     const size_t warnings = loaded.report.warnings.size();
-    if (warnings == 0) return line;
-    return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
+    if (warnings == 0) return text;
+    return text + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
 }
 
 std::string describeWarnings(const LoadedScene& loaded) {

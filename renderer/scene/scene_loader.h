@@ -32,9 +32,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
 // own (glTF), else framing the scene; `traversal` picks Embree's triangle test
-// (traversal_precision.h).
-// Throws strata::Error naming the bad file.
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic);
+// (traversal_precision.h). Throws strata::Error naming the bad file, or the budget the scene
+// exceeds (scene_format.h), before its geometry is read.
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic, const SceneBudget& budget = {});
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,
@@ -42,7 +42,8 @@ LoadedScene loadScene(const std::filesystem::path& path,
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
 // the triangle test and the rounding gap share that chose it, the extent (the bounding box's
-// size, in the scene's units: metres for glTF) and how many warnings loading gave.
+// size, in the scene's units: metres for glTF), the triangles placed by instances when there
+// are any, and how many warnings loading gave.
 std::string describeScene(const LoadedScene& loaded);
 
 // Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.
