@@ -1,5 +1,7 @@
 // strata: the command-line front end. Each subcommand lives in its own file; this one only parses
-// and turns every failure into one line on stderr and a non-zero exit.
+// and turns every failure into one line on stderr and a non-zero exit: 2 for a usage error (an
+// unknown command or option, an option's value out of range), 1 for an input error (a missing or
+// malformed file) or a failure while rendering.
 #include <cstdio>
 #include <string>
 #include <vector>

@@ -1,6 +1,8 @@
 #include "render_command.h"
 
 #include <CLI/App.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
 #include "io/output_file.h"
 #include "integrator/pass_partition.h"
@@ -26,8 +29,8 @@ struct RenderCommand {
     RenderOptions render;
     int spp = 240;
     std::vector<std::string> outputs;
-    float exposure = 0.0f;
-    std::string tonemap = "clamp";
+    std::optional<float> exposure;  // unset: auto (io/auto_exposure.h), or 0 under the clamp
+    std::string tonemap = std::string(tonemapName(kDefaultTonemap));
     bool json = false;
     bool earlyOut = true;
 
@@ -44,6 +47,11 @@ Tonemap RenderCommand::checkOptions(const RenderJob& job) const {
     }
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (exposure && !(std::abs(*exposure) <= kExposureLimit)) {
+        const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
+        throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
+    }
+    render.backdrop();  // a bad --background before the scene is read
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
     if (render.noiseThreshold > 0.0 && job.ranks() > 1) {
         throw UsageError("--noise-threshold: not available under MPI");
@@ -65,7 +73,9 @@ void RenderCommand::run() const {
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
         std::fprintf(stderr, "%s\n%s", describeScene(loaded).c_str(), describeWarnings(loaded).c_str());
-        if (loaded.scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+        if (loaded.scene.lights().litByDefault()) {
+            std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(loaded.scene.lights()).c_str());
+        }
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
                          "note: the scene's point lights need next-event estimation; with --no-nee they are dark\n");
@@ -99,6 +109,10 @@ void RenderCommand::run() const {
     // Rank 0 reports the whole job's progress: JobProgress adds up every rank's passes.
     std::optional<ProgressReporter> progress;
     if (job.isRoot()) progress.emplace("render", passesToRender, kPathsPerPass);
+    // The PNG's exposure, unless given: from rank 0's first pass, the first pass of the image.
+    const bool meterExposure = !exposure && tonemapKind != Tonemap::Clamp;
+    float pngExposure = exposure.value_or(0.0f);
+    bool metered = false;
     {
         // Made and destroyed on every rank alike, around (not in) the step that may fail on some.
         JobProgress jobProgress(job);
@@ -107,6 +121,10 @@ void RenderCommand::run() const {
             // checkOptions refuses it under MPI) once adaptive sampling has finished every pixel.
             session.run({}, [&](const PassReport& report) {
                 jobProgress.addPass(report.paths);
+                if (meterExposure && job.isRoot() && !metered) {
+                    pngExposure = autoExposure(Image::fromMeans(session.buffer()));
+                    metered = true;
+                }
                 if (progress) {
                     const PassTally done = jobProgress.tally();
                     progress->update(done.passes, done.paths);
@@ -134,10 +152,16 @@ void RenderCommand::run() const {
 
     // Every output is encoded before any replaces its file: a failure leaves all of them as they were.
     const Image image = Image::fromMeans(buffer);
+    if (metered && std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+            return imageFormatOf(out) == ImageFormat::Png;
+        })) {
+        std::fprintf(stderr, "note: PNG exposure %+.2f stops, from the first pass (--exposure fixes it)\n",
+                     pngExposure);
+    }
     std::vector<std::unique_ptr<OutputFile>> outputFiles;
     for (const auto& out : outputs) {
         outputFiles.push_back(std::make_unique<OutputFile>(out));
-        writeImage(*outputFiles.back(), image, PngSettings{exposure, tonemapKind});
+        writeImage(*outputFiles.back(), image, PngSettings{pngExposure, tonemapKind});
     }
     for (const auto& file : outputFiles) {
         file->commit();
@@ -171,6 +195,8 @@ void RenderCommand::run() const {
             {"pixels_done_early", buffer.pixelCount() - session.adaptive().activePixels()},
             {"mean_spp", static_cast<double>(counters.paths) / buffer.pixelCount()},
             {"outputs", outputs},
+            {"tonemap", tonemap},
+            {"exposure", pngExposure},
         };
         std::printf("%s\n", report.dump().c_str());
     } else if (buffer.droppedSamples() > 0) {
@@ -189,8 +215,12 @@ void addRenderCommand(CLI::App& app) {
     sub->add_option("--out", command->outputs,
                     "Output image (repeatable): .exr or .pfm linear, .png sRGB, in any letter case; its "
                     "folder must exist and be writable (checked before rendering)");
-    sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "PNG tonemap: " + tonemapNames())->capture_default_str();
+    sub->add_option("--exposure", command->exposure,
+                    "PNG exposure in stops (default: auto, middle grey 0.18 for the first pass's "
+                    "log-average luminance; 0 with --tonemap clamp)");
+    sub->add_option("--tonemap", command->tonemap,
+                    "PNG tonemap: " + tonemapNames() + " (aces: ACES filmic, Narkowicz's fit; clamp: linear, cut at 1)")
+        ->capture_default_str();
     sub->add_flag("--json", command->json, "Print a JSON report on stdout");
     sub->add_flag("!--no-early-out", command->earlyOut,
                   "Render even a scene that cannot be anything but black");

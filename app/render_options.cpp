@@ -44,6 +44,10 @@ void RenderOptions::addTo(CLI::App& command) {
         ->excludes(envOption);
     command.add_option("--env-rotate", envRotate, "Turn the environment map about +y (degrees)")
         ->capture_default_str();
+    command.add_option("--background", background,
+                       std::string("What camera rays that miss every surface show: ") + kBackdropSyntax +
+                           " (env: the environment; default: a grey gradient under the default white "
+                           "sky, else the environment)");
     command.add_option("--noise-threshold", noiseThreshold,
                        "Adaptive sampling: a pixel stops receiving passes at this relative "
                        "standard error (0: off)")
@@ -85,6 +89,7 @@ std::vector<std::string> RenderOptions::arguments() const {
         for (float c : envColor) args.push_back(text(c));
     }
     if (envRotate != defaults.envRotate) args.insert(args.end(), {"--env-rotate", text(envRotate)});
+    if (!background.empty()) args.insert(args.end(), {"--background", background});
     if (noiseThreshold != defaults.noiseThreshold) {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
@@ -123,6 +128,7 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
         throw UsageError("--noise-threshold: must be in 0..10 (0: off)");
     }
     settings.adaptive.threshold = noiseThreshold;
+    settings.backdrop = backdrop();
     return settings;
 }
 
@@ -133,6 +139,16 @@ SceneBundle RenderOptions::readSceneBundle() const {
         scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene), cameraPath);
     if (!env.empty() && env != "none") bundle.environmentMap = SceneFile{env, readExrFile(env)};
     return bundle;
+}
+
+BackdropSetting RenderOptions::backdrop() const {
+    if (background.empty()) return {};
+    const auto setting = parseBackdrop(background);
+    if (!setting) {
+        throw UsageError("--background: expected " + std::string(kBackdropSyntax) +
+                         " (radiances finite and >= 0), got '" + background + "'");
+    }
+    return *setting;
 }
 
 namespace {

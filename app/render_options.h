@@ -21,16 +21,17 @@ struct RenderOptions {
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
-    int depth = 5;
+    int depth = kProgramDefaults.depth;
     std::optional<double> epsilon;  // when set, the depth comes from the truncation error
-    std::string sampler = "strata24-bsdf";
+    std::string sampler{samplerName(kProgramDefaults.sampler)};
     uint64_t seed = 0;
     int threads = 0;
-    bool nee = true;
-    int rouletteDepth = kRouletteDepthDefault;
+    bool nee = kProgramDefaults.nextEventEstimation;
+    int rouletteDepth = kProgramDefaults.rouletteDepth;
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
+    std::string background;        // --background (film/backdrop.h's syntax); empty: automatic
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
     uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
@@ -42,6 +43,8 @@ struct RenderOptions {
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const Scene& scene) const;
+    // What camera rays that miss show (--background); throws strata::Error naming the option.
+    BackdropSetting backdrop() const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
     // file) and the --env map without parsing them.
     SceneBundle readSceneBundle() const;

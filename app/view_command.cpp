@@ -1,10 +1,12 @@
 #include "view_command.h"
 
 #include <CLI/App.hpp>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "io/auto_exposure.h"
 #include "util/error.h"
 #include "render_options.h"
 #include "usage.h"
@@ -24,8 +26,8 @@ struct ViewCommand {
     int targetSpp = 0;
     float targetSeconds = 0.0f;
     float scale = 1.0f;
-    float exposure = 0.0f;
-    std::string tonemap = "clamp";
+    std::optional<float> exposure;  // unset: auto (io/auto_exposure.h), or 0 under the clamp
+    std::string tonemap = std::string(tonemapName(kDefaultTonemap));
     bool json = false;
 
     void run() const;
@@ -40,6 +42,11 @@ void ViewCommand::run() const {
     if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (exposure && !(std::abs(*exposure) <= kExposureLimit)) {
+        const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
+        throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
+    }
+    const BackdropSetting backdrop = render.backdrop();
     if (!screenshot.empty()) {
         if (frames == 0) throw UsageError("--screenshot needs --frames N");
         if (checkOutputOption("--screenshot", screenshot) != ImageFormat::Png) {
@@ -53,13 +60,16 @@ void ViewCommand::run() const {
     auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), &environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
-    if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+    if (scene->scene.lights().litByDefault()) {
+        std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(scene->scene.lights()).c_str());
+    }
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
     viewer::ViewerSettings viewerSettings;
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
+    viewerSettings.budget = SceneBudget{render.maxTriangles};
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
@@ -75,8 +85,10 @@ void ViewCommand::run() const {
     viewerSettings.targetSeconds = targetSeconds;
     viewerSettings.noiseThreshold = static_cast<float>(settings.adaptive.threshold);
     viewerSettings.resolutionScale = scale;
-    viewerSettings.display.exposure = exposure;
+    viewerSettings.display.exposure = exposure.value_or(0.0f);
     viewerSettings.display.tonemap = *tonemapKind;
+    viewerSettings.autoExposure = !exposure && *tonemapKind != Tonemap::Clamp;
+    viewerSettings.backdrop = backdrop;
 
     viewer::ViewRunOptions run;
     run.headless = !headless.empty();
@@ -85,10 +97,11 @@ void ViewCommand::run() const {
     run.height = window.at(1);
     run.frames = frames;
     if (!screenshot.empty()) run.screenshot = screenshot;
-    // The image size follows the window; --width/--height set the window when given.
+    // The image has the window less the panel beside it; --width/--height set the image instead,
+    // and the window is made that much wider than it.
     if (render.width) {
         if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
-        run.width = *render.width;
+        run.width = *render.width + static_cast<int>(viewer::kPanelWidth);
     }
     if (render.height) {
         if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
@@ -115,8 +128,10 @@ void ViewCommand::run() const {
     const nlohmann::json out{
         {"scene", scene->scenePath().string()},
         {"context", report.context},
-        {"width", run.width},
+        {"width", run.width},  // the window's
         {"height", run.height},
+        {"image_width", last && !last->sides.empty() ? last->sides[0].image.width : 0},
+        {"image_height", last && !last->sides.empty() ? last->sides[0].image.height : 0},
         {"frames", report.frameSeconds.size()},
         {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
         {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
@@ -149,16 +164,24 @@ void addViewCommand(CLI::App& app) {
                     "Write the last frame (image + panel) as PNG (.png in any letter case; its folder "
                     "must exist and be writable)");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
-    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_option("--window", command->window,
+                    "Window size W H; the image has it less the panel (--width/--height set the image)")
+        ->expected(2)
+        ->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
         ->capture_default_str();
-    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+    sub->add_option("--scale", command->scale,
+                    "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
-    sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();
+    sub->add_option("--exposure", command->exposure,
+                    "Exposure in stops (default: auto, middle grey 0.18 for the first image's "
+                    "log-average luminance; 0 with --tonemap clamp)");
+    sub->add_option("--tonemap", command->tonemap,
+                    tonemapNames() + " (aces: ACES filmic, Narkowicz's fit; clamp: linear, cut at 1)")
+        ->capture_default_str();
     sub->add_flag("--json", command->json, "Print frame-time p50/p95 and throughput as JSON on stdout");
     sub->callback([command] { command->run(); });
 }

@@ -104,6 +104,42 @@ void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::
     mesh.triangles.push_back({base, base + 1, base + 2});
     mesh.triangles.push_back({base, base + 2, base + 3});
     mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {material, material});
+    if (!mesh.triangleNormals.empty()) mesh.triangleNormals.insert(mesh.triangleNormals.end(), {kNoNormals, kNoNormals});
+}
+
+void addSphere(MeshData& mesh, const glm::vec3& centre, float radius, int rings, uint32_t material) {
+    const int segments = 2 * rings;
+    const auto first = static_cast<uint32_t>(mesh.positions.size());
+    const auto firstNormal = static_cast<uint32_t>(mesh.normals.size());
+    // Vertex (ring, segment), ring 0 at the +z pole; the seam's segment repeats segment 0.
+    for (int ring = 0; ring <= rings; ++ring) {
+        const double theta = M_PI * ring / rings;
+        for (int segment = 0; segment <= segments; ++segment) {
+            const double phi = 2.0 * M_PI * segment / segments;
+            const glm::vec3 n(static_cast<float>(std::sin(theta) * std::cos(phi)),
+                              static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)));
+            mesh.positions.push_back(centre + radius * n);
+            mesh.normals.push_back(n);
+        }
+    }
+    if (mesh.triangleNormals.size() < mesh.triangles.size()) mesh.triangleNormals.resize(mesh.triangles.size(), kNoNormals);
+    const auto index = [&](int ring, int segment) { return static_cast<uint32_t>(ring * (segments + 1) + segment); };
+    const auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (mesh.positions[first + a] == mesh.positions[first + b] || mesh.positions[first + b] == mesh.positions[first + c] ||
+            mesh.positions[first + a] == mesh.positions[first + c]) {
+            return;  // the poles' degenerate halves
+        }
+        mesh.triangles.push_back({first + a, first + b, first + c});
+        mesh.triangleMaterials.push_back(material);
+        mesh.triangleNormals.push_back({firstNormal + a, firstNormal + b, firstNormal + c});
+    };
+    for (int ring = 0; ring < rings; ++ring) {
+        for (int segment = 0; segment < segments; ++segment) {
+            // Counter-clockwise seen from outside: down the ring, then along increasing phi.
+            add(index(ring, segment), index(ring + 1, segment), index(ring + 1, segment + 1));
+            add(index(ring, segment), index(ring + 1, segment + 1), index(ring, segment + 1));
+        }
+    }
 }
 
 MeshData furnaceMesh(const Material& material) {
@@ -135,6 +171,9 @@ MeshData lambertSquareMesh(const Material& receiver) {
     addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);  // faces +z
     // Counter-clockwise seen from below: its front faces the receiver.
     addQuad(mesh, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1}, 1);
+    // The square is the only light: of radiance 1, no brighter than the default sky, which would
+    // light the scene otherwise (lights/scene_lights.h).
+    mesh.environment.kind = Environment::Kind::None;
     return mesh;
 }
 

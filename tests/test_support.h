@@ -89,6 +89,10 @@ double chiSquareCritical(size_t degrees);
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material);
 
+// A UV sphere of `rings` x 2 `rings` quads appended to `mesh` with material `material`, facing
+// out (counter-clockwise seen from outside), with unit vertex normals pointing out.
+void addSphere(MeshData& mesh, const glm::vec3& centre, float radius, int rings, uint32_t material);
+
 // The furnace (notes section 5.1): the cube [-1,1]^3 seen from inside, every face of `material`
 // facing inward. With Kd = rho and Ke = Le the exact radiance at depth K is
 // Le (1 - rho^(K+1)) / (1 - rho).
@@ -99,7 +103,8 @@ double furnaceRadiance(double albedo, double emission, int depth);
 
 // Lambert's polygon case (notes section 5.2): a receiver plane z = 0 of `receiver` (large,
 // facing up) under the unit square [-1/2,1/2]^2 at z = 1, emitting 1 downward (and black).
-// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance.
+// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance. No
+// environment.
 MeshData lambertSquareMesh(const Material& receiver);
 inline constexpr double kLambertSquareIrradiance = 0.752274688454;
 // The ray that sees the origin of the receiver, from `from` (above the plane, below the square).

@@ -54,9 +54,11 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     batch.height = settings.height;
     const std::string spp = std::to_string(settings.spp);
     // One frame, then on to the target: the viewer draws its panel at its own frame rate meanwhile.
+    // --width/--height give the viewer's image the batch render's size (its window is the panel
+    // wider): the same paths.
     const auto view = strataCommandLine(
         "view", options,
-        {"--headless", "--no-split", "--target-spp", spp, "--window", std::to_string(settings.width),
+        {"--headless", "--no-split", "--target-spp", spp, "--width", std::to_string(settings.width), "--height",
          std::to_string(settings.height), "--frames", "1", "--json"});
     // The default split view: uniform | strata24, both at the options' depth.
     const auto splitView = strataCommandLine(

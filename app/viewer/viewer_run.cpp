@@ -75,9 +75,10 @@ ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& t
         if (last) break;
         if (hadInput()) lastInput = Clock::now();
         const bool quiet = Clock::now() - lastInput >= kIdleAfter;
-        // Rendering done and nobody touching anything: nothing on screen can change until an
-        // event comes (input, or a snapshot from the worker), so block on it: no CPU at rest.
-        if (quiet && resting(viewer.shownSnapshot()) && waitForEvent(std::nullopt)) continue;
+        // Rendering done, nothing loading and nobody touching anything: nothing on screen can
+        // change until an event comes (input, or a snapshot from the worker), so block on it: no
+        // CPU at rest.
+        if (quiet && resting(viewer.shownSnapshot()) && !viewer.loading() && waitForEvent(std::nullopt)) continue;
         // While the render goes on, a quiet window draws at the idle rate, and at once when input
         // or a snapshot comes.
         const auto next = frameStart + (quiet ? idleFrame : activeFrame);
@@ -161,8 +162,8 @@ ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings
     ViewRunReport report;
     {
         Viewer viewer(std::move(scene), settings, std::move(reference));
-        // A new render snapshot ends the wait for events below.
-        viewer.setSnapshotCallback([] { glfwPostEmptyEvent(); });
+        // A new render snapshot, or a load's progress, ends the wait for events below.
+        viewer.setWakeCallback([] { glfwPostEmptyEvent(); });
         report = loop(
             viewer, options, target,
             [&](float) {

@@ -35,6 +35,8 @@ private:
 void writeExr(OutputFile& file, const Image& image) {
     Imf::Header header(image.width, image.height);
     for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+    const bool hasAlpha = !image.alpha.empty();
+    if (hasAlpha) header.channels().insert("A", Imf::Channel(Imf::FLOAT));
     OutputFileStream stream(file);
     Imf::OutputFile out(stream, header);
     Imf::FrameBuffer frame;
@@ -44,6 +46,10 @@ void writeExr(OutputFile& file, const Image& image) {
     frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
     frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
     frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+    if (hasAlpha) {
+        char* alpha = const_cast<char*>(reinterpret_cast<const char*>(image.alpha.data()));
+        frame.insert("A", Imf::Slice(Imf::FLOAT, alpha, sizeof(float), sizeof(float) * image.width));
+    }
     out.setFrameBuffer(frame);
     out.writePixels(image.height);
 }
@@ -111,7 +117,11 @@ private:
 Image Image::fromMeans(const AccumulationBuffer& buffer) {
     Image image{buffer.width(), buffer.height(), {}};
     image.pixels.resize(buffer.pixelCount());
-    for (size_t i = 0; i < buffer.pixelCount(); ++i) image.pixels[i] = glm::vec3(buffer.mean(i));
+    image.alpha.resize(buffer.pixelCount());
+    for (size_t i = 0; i < buffer.pixelCount(); ++i) {
+        image.pixels[i] = glm::vec3(buffer.mean(i));
+        image.alpha[i] = static_cast<float>(buffer.coverage(i));
+    }
     return image;
 }
 
@@ -207,6 +217,13 @@ Image readExr(std::string_view bytes, const std::string& name) {
         frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
         frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
         frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+        if (in.header().channels().findChannel("A")) {
+            image.alpha.resize(image.pixels.size());
+            char* alpha = reinterpret_cast<char*>(image.alpha.data()) -
+                          static_cast<ptrdiff_t>(window.min.x) * sizeof(float) -
+                          static_cast<ptrdiff_t>(window.min.y) * sizeof(float) * image.width;
+            frame.insert("A", Imf::Slice(Imf::FLOAT, alpha, sizeof(float), sizeof(float) * image.width));
+        }
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);
         return image;

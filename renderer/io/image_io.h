@@ -1,7 +1,10 @@
 #pragma once
 // Images on disk. EXR (OpenEXR, 32-bit float) and PFM hold linear radiance; PNG (stb) is
-// tonemapped sRGB. Every write goes through an OutputFile (io/output_file.h): to a temporary file
-// created exclusively beside the target, renamed over it only when complete.
+// tonemapped sRGB. An EXR also holds the image's alpha, when it has one, as its A channel: a
+// render's coverage, the share of each pixel's camera rays that found a surface. Its RGB is the
+// radiance as rendered, the backdrop (film/backdrop.h) included where A < 1, so it is premultiplied
+// by A only over a black backdrop. Every write goes through an OutputFile (io/output_file.h): to a
+// temporary file created exclusively beside the target, renamed over it only when complete.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -19,7 +22,9 @@ struct Image {
     int width = 0;
     int height = 0;
     std::vector<glm::vec3> pixels;  // row-major, top row first, linear RGB
+    std::vector<float> alpha{};     // the same order, or empty: none
 
+    // The buffer's means, and its coverage as the alpha.
     static Image fromMeans(const AccumulationBuffer& buffer);
 };
 
@@ -47,7 +52,8 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
 // decodes allows, a 1-bit PNG at deflate's best ratio (1032:1), 8256 pixels a byte. A forged or
 // truncated header then fails at once instead of allocating for pixels the file does not hold.
 void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name);
-// Reads the R, G, B channels of an EXR file as linear float; throws strata::Error naming the file.
+// Reads the R, G, B (and A, when there is one) channels of an EXR file as linear float; throws
+// strata::Error naming the file.
 Image readExr(const std::filesystem::path& path);
 // The bytes of an EXR file, undecoded; throws strata::Error "PATH: no such EXR file" or
 // "PATH: cannot open EXR file".

@@ -13,6 +13,7 @@
 
 #include "scene/camera.h"
 #include "scene/mesh.h"
+#include "scene/model_orientation.h"
 
 namespace strata {
 
@@ -52,10 +53,12 @@ struct TriangleCount {
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget);
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
-// of the scene's own camera, which the scene takes when no description or --camera file gives one.
+// of the scene's own camera, which the scene takes when no description or --camera file gives one;
+// and the model's orientation, which the default camera takes otherwise (default_camera.h).
 struct ParsedScene {
     MeshData mesh;
     std::optional<CameraPose> camera;
+    ModelOrientation orientation = kGltfOrientation;
 };
 
 struct SceneFile {
@@ -100,6 +103,14 @@ struct SceneFormat {
 // "PATH: unknown scene format '.EXT' (known: .obj, .gltf, .glb)" for one that is not in the table (and names
 // the known ones too when there is no extension).
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
+
+// The extension of `path` in lower case, with the dot, as formats are told by it:
+// "ROOM.OBJ" -> ".obj".
+std::string lowerCaseExtension(const std::filesystem::path& path);
+
+// The registered extensions, lower case with the dot, in the table's order: what a file chooser
+// lists as scene files.
+std::vector<std::string_view> sceneExtensions();
 
 // The registered extensions for messages and help: ".obj, .gltf, .glb".
 std::string knownSceneExtensions();

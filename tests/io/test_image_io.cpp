@@ -3,6 +3,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "film/accumulation_buffer.h"
 #include "util/error.h"
 #include "io/image_io.h"
 #include "test_support.h"
@@ -27,6 +28,26 @@ TEST_CASE("image io: EXR round trip is exact in float") {
     CHECK(back.pixels == image.pixels);
     // Only the file itself is left: no temporary beside it.
     CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);
+}
+
+TEST_CASE("image io: an image's alpha goes to the EXR's A channel and back, a render's is its coverage") {
+    const auto dir = test::scratchDir("exr-alpha");
+    Image image = gradient();
+    for (int i = 0; i < 15; ++i) image.alpha.push_back(static_cast<float>(i) / 14.0f);
+    writeImage(dir / "a.exr", image);
+    const Image back = readExr(dir / "a.exr");
+    CHECK(back.pixels == image.pixels);
+    CHECK(back.alpha == image.alpha);
+    CHECK(readExr(dir / "a.exr").alpha.size() == 15);
+    writeImage(dir / "opaque.exr", gradient());
+    CHECK(readExr(dir / "opaque.exr").alpha.empty());
+    AccumulationBuffer buffer(2, 1);
+    buffer.addSample(0, glm::vec3(1.0f), true);
+    buffer.addSample(0, glm::vec3(0.5f), false);
+    buffer.addSample(1, glm::vec3(0.5f), false);
+    const Image means = Image::fromMeans(buffer);
+    CHECK(means.alpha == std::vector<float>{0.5f, 0.0f});
+    CHECK(means.pixels[0] == glm::vec3(0.75f));
 }
 
 TEST_CASE("image io: PFM holds little-endian floats, bottom row first") {
@@ -127,5 +148,12 @@ TEST_CASE("tonemap: sRGB encoding and curves at known points") {
     CHECK(applyTonemap(glm::vec3(0.25f), 1.0f, Tonemap::Clamp).x == doctest::Approx(0.5f));
     CHECK(applyTonemap(glm::vec3(-1.0f), 0.0f, Tonemap::Aces).x == 0.0f);
     CHECK(parseTonemap("aces") == Tonemap::Aces);
+    // The default display is the filmic curve: it rolls off the highlights the clamp cuts, and
+    // reaches 1 only near x = 7.24.
+    CHECK(kDefaultTonemap == Tonemap::Aces);
+    CHECK(applyTonemap(glm::vec3(2.0f), 0.0f, Tonemap::Aces).x < applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x);
+    CHECK(applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x < 1.0f);
+    CHECK(applyTonemap(glm::vec3(7.3f), 0.0f, Tonemap::Aces).x == 1.0f);
+    CHECK(applyTonemap(glm::vec3(0.18f), 0.0f, Tonemap::Aces).x == doctest::Approx(0.2669f).epsilon(1e-3));
     CHECK_FALSE(parseTonemap("filmic").has_value());
 }
