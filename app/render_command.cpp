@@ -8,16 +8,19 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
 #include "io/auto_exposure.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 #include "integrator/pass_partition.h"
 #include "integrator/render_session.h"
 #include "progress.h"
 #include "render_job.h"
 #include "render_options.h"
+#include "usage.h"
 
 namespace strata {
 namespace {
@@ -31,15 +34,16 @@ struct RenderCommand {
     bool json = false;
     bool earlyOut = true;
 
-    // The checks that need no scene, so a bad option fails before a large scene is read.
-    Tonemap checkOptions(int ranks) const;
+    // The checks that need no scene, so a bad option or an output that cannot be written fails
+    // before a large scene is read or any pass is rendered.
+    Tonemap checkOptions(const RenderJob& job) const;
     void run() const;
 };
 
-Tonemap RenderCommand::checkOptions(int ranks) const {
+Tonemap RenderCommand::checkOptions(const RenderJob& job) const {
     if (spp < kPathsPerPass || spp % kPathsPerPass != 0) {
         throw UsageError("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
-                    std::to_string(spp));
+                         std::to_string(spp));
     }
     const auto tonemapKind = parseTonemap(tonemap);
     if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
@@ -47,10 +51,13 @@ Tonemap RenderCommand::checkOptions(int ranks) const {
         const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
-    for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
-    render.backdrop();  // and a bad --background before the scene is read
+    render.backdrop();  // a bad --background before the scene is read
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
-    if (render.noiseThreshold > 0.0 && ranks > 1) throw UsageError("--noise-threshold: not available under MPI");
+    if (render.noiseThreshold > 0.0 && job.ranks() > 1) {
+        throw UsageError("--noise-threshold: not available under MPI");
+    }
+    // Only rank 0 writes: the other ranks' hosts need not have the folder.
+    for (const auto& out : outputs) checkOutputOption("--out", out, job.isRoot());
     return *tonemapKind;
 }
 
@@ -58,10 +65,9 @@ void RenderCommand::run() const {
     // Under mpirun the ranks split the passes (render_job.h); every step that can fail runs on all
     // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
     RenderJob job;
-    const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
+    const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job); });
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
-    const LoadedScene loaded =
-        job.collectively([&] { return render.parseScene(std::move(files), render.environment()); });
+    const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
@@ -144,6 +150,7 @@ void RenderCommand::run() const {
                      passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
     }
 
+    // Every output is encoded before any replaces its file: a failure leaves all of them as they were.
     const Image image = Image::fromMeans(buffer);
     if (metered && std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
             return imageFormatOf(out) == ImageFormat::Png;
@@ -151,9 +158,14 @@ void RenderCommand::run() const {
         std::fprintf(stderr, "note: PNG exposure %+.2f stops, from the first pass (--exposure fixes it)\n",
                      pngExposure);
     }
+    std::vector<std::unique_ptr<OutputFile>> outputFiles;
     for (const auto& out : outputs) {
-        writeImage(out, image, PngSettings{pngExposure, tonemapKind});
-        std::fprintf(stderr, "wrote %s\n", out.c_str());
+        outputFiles.push_back(std::make_unique<OutputFile>(out));
+        writeImage(*outputFiles.back(), image, PngSettings{pngExposure, tonemapKind});
+    }
+    for (const auto& file : outputFiles) {
+        file->commit();
+        std::fprintf(stderr, "wrote %s\n", file->target().c_str());
     }
 
     const glm::dvec3 mean = buffer.imageMean();
@@ -200,7 +212,9 @@ void addRenderCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("render", "Render headless, progressively, to image files");
     command->render.addTo(*sub);
     sub->add_option("--spp", command->spp, "Samples per pixel, a multiple of 24")->capture_default_str();
-    sub->add_option("--out", command->outputs, "Output image(s): .exr/.pfm linear, .png sRGB (repeatable)");
+    sub->add_option("--out", command->outputs,
+                    "Output image (repeatable): .exr or .pfm linear, .png sRGB, in any letter case; its "
+                    "folder must exist and be writable (checked before rendering)");
     sub->add_option("--exposure", command->exposure,
                     "PNG exposure in stops (default: auto, middle grey 0.18 for the first pass's "
                     "log-average luminance; 0 with --tonemap clamp)");

@@ -8,6 +8,7 @@
 #include "bundled_assets.h"
 #include "util/error.h"
 #include "integrator/truncation.h"
+#include "io/image_io.h"
 
 namespace strata {
 
@@ -139,56 +140,69 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
 SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneBundle(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
-                                   cameraPath, readOptions());
+    SceneBundle bundle = strata::readSceneBundle(
+        scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene), cameraPath, readOptions());
+    if (!env.empty() && env != "none") bundle.environmentMap = SceneFile{env, readExrFile(env)};
+    return bundle;
 }
 
 BackdropSetting RenderOptions::backdrop() const {
     if (background.empty()) return {};
     const auto setting = parseBackdrop(background);
     if (!setting) {
-        throw Error("--background: expected " + std::string(kBackdropSyntax) +
-                    " (radiances finite and >= 0), got '" + background + "'");
+        throw UsageError("--background: expected " + std::string(kBackdropSyntax) +
+                         " (radiances finite and >= 0), got '" + background + "'");
     }
     return *setting;
 }
 
-Environment RenderOptions::environment() const {
-    if (!std::isfinite(envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
+namespace {
+
+// The environment `options` give, its map decoded from `files`; a note on the map to `warnings`.
+Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
+                               std::vector<std::string>& warnings) {
+    if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
-    if (!envColor.empty()) {
-        for (float c : envColor) {
+    if (!options.envColor.empty()) {
+        for (float c : options.envColor) {
             if (!(std::isfinite(c) && c >= 0.0f)) {
                 throw UsageError("--env-color: must be three finite radiances >= 0");
             }
         }
         environment.kind = Environment::Kind::Uniform;
-        environment.radiance = glm::vec3(envColor[0], envColor[1], envColor[2]);
-    } else if (env == "none") {
+        environment.radiance = glm::vec3(options.envColor[0], options.envColor[1], options.envColor[2]);
+    } else if (options.env == "none") {
         environment.kind = Environment::Kind::None;
-    } else if (!env.empty()) {
+    } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
-        const EnvironmentMapFile file = readEnvironmentMap(env);
+        const SceneFile& map = *files.environmentMap;
+        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name);
         if (file.zeroedNegatives > 0) {
-            std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
-                         env.c_str(), file.zeroedNegatives);
+            warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
+                               " slightly negative texel components (lossy compression) read as 0");
         }
         environment.map = file.map;
-        environment.rotationDegrees = envRotate;
+        environment.rotationDegrees = options.envRotate;
     }
     return environment;
 }
 
-LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
+}  // namespace
+
+LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
     if (maxTriangles < 1) throw UsageError("--max-triangles: must be at least 1");
+    std::vector<std::string> warnings;
+    const Environment given = optionsEnvironment(*this, files, warnings);
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
                                             SceneBudget{maxTriangles});
+    loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
     // The --env options override the scene description's environment; without them it stands.
-    if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
+    if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
+    if (environment) *environment = given;
     return loaded;
 }
 
-LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle(), environment()); }
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
     if (width && (*width < 1 || *width > 65536)) throw UsageError("--width: must be in 1..65536");

@@ -47,15 +47,16 @@ struct RenderOptions {
     // What camera rays that miss show (--background); throws strata::Error naming the option.
     BackdropSetting backdrop() const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
-    // file) without parsing them, confined to the scene's folder unless allowOutsideFiles.
+    // file) and the --env map without parsing them, confined to the scene's folder unless
+    // allowOutsideFiles (the --env map, the user's own, is not).
     SceneBundle readSceneBundle() const;
-    // The environment the options give (lights/environment.h), its map read and checked; throws
-    // strata::Error naming the option or the file.
-    Environment environment() const;
-    // Builds the scene from its files; `environment` (environment(), read once by the caller),
-    // unless Default, overrides the scene description's.
-    LoadedScene parseScene(SceneBundle files, const Environment& environment) const;
-    // Loads the scene and camera: parseScene(readSceneBundle(), environment()).
+    // Builds the scene from its files, lit by the environment the options give (lights/
+    // environment.h) when they give one, else by the scene description's: the --env map is
+    // decoded from the bundle's copy, and what decoding tolerated joins the load report's
+    // warnings. `environment`, when not null, receives the options' environment (Default when
+    // they give none). Throws strata::Error naming the option or the file.
+    LoadedScene parseScene(SceneBundle files, Environment* environment = nullptr) const;
+    // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;
     // What reading the scene may read (allowOutsideFiles).
     SceneReadOptions readOptions() const { return {allowOutsideFiles}; }

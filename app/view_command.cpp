@@ -9,6 +9,7 @@
 #include "io/auto_exposure.h"
 #include "util/error.h"
 #include "render_options.h"
+#include "usage.h"
 #include "viewer_run.h"
 
 namespace strata {
@@ -46,15 +47,17 @@ void ViewCommand::run() const {
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
     const BackdropSetting backdrop = render.backdrop();
-    if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
-        throw UsageError("--screenshot: must be a .png file");
+    if (!screenshot.empty()) {
+        if (frames == 0) throw UsageError("--screenshot needs --frames N");
+        if (checkOutputOption("--screenshot", screenshot) != ImageFormat::Png) {
+            throw UsageError("--screenshot: " + screenshot + ": must be a .png file");
+        }
     }
-    if (!screenshot.empty() && frames == 0) throw UsageError("--screenshot needs --frames N");
 
-    // Read once: the map lights the first scene and stays in the settings for the scenes opened
-    // after it.
-    const Environment environment = render.environment();
-    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
+    // Decoded once: the map lights the first scene and stays in the settings for the scenes
+    // opened after it.
+    Environment environment;
+    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), &environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
     if (scene->scene.lights().litByDefault()) {
@@ -158,7 +161,9 @@ void addViewCommand(CLI::App& app) {
         ->expected(0, 1)
         ->default_str("auto");
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
-    sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
+    sub->add_option("--screenshot", command->screenshot,
+                    "Write the last frame (image + panel) as PNG (.png in any letter case; its folder "
+                    "must exist and be writable)");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
     sub->add_option("--window", command->window,
                     "Window size W H; the image has it less the panel (--width/--height set the image)")

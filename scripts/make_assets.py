@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the bundled scenes in assets/ (run from the repository root; output is committed).
+"""Writes the bundled scenes in assets/ and the test scenes in tests/data/ (run from the
+repository root; output is committed).
 
 cornell/  The Cornell box from the published Cornell measurements (units: mm): the room, the
           two blocks, and the 130 x 105 mm ceiling light, lowered 0.8 mm so it does not share
@@ -15,6 +16,10 @@ glossy/   Three Cook-Torrance spheres (gold metal, red plastic, rough copper) on
           floor before a matte wall, under a tilted softbox and a warm strip light (units: m).
           Ks is the Fresnel F0, Pr the roughness (GGX alpha = Pr^2). The spheres are flat-faceted
           icospheres (the renderer uses geometric normals), fine enough for smooth highlights.
+tests/data/cornell_point/  The Cornell box's room and blocks without the area light, lit by one
+          point light just under the ceiling's centre (in its description, W/sr in mm units): the
+          Cornell light's colour, about the irradiance that light gives the floor below it. A scene
+          whose light has no radiance bound (K_eps) and that only next-event estimation lights.
 Every polygon is written counter-clockwise as seen from the side it faces (its front).
 """
 import json
@@ -84,8 +89,8 @@ def block(top):
 
 CORNELL_ALBEDOS = [("white", [("Kd", [0.725, 0.71, 0.68])]),
                    ("red", [("Kd", [0.63, 0.065, 0.05])]),
-                   ("green", [("Kd", [0.14, 0.45, 0.091])]),
-                   ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])]
+                   ("green", [("Kd", [0.14, 0.45, 0.091])])]
+CORNELL_LIGHT = ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])
 CORNELL_CAMERA = {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
                   "fov_y": 39.3077, "width": 512, "height": 512}
 SHORT_BLOCK = [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]]
@@ -111,17 +116,37 @@ def cornell_room():
 
 def cornell():
     groups, light = cornell_room()
-    groups.append(("short_block", "white", block(SHORT_BLOCK)))
-    groups.append(("tall_block", "white", block(TALL_BLOCK)))
-    groups.append(light)
+    groups += cornell_blocks() + [light]
     write_obj("assets/cornell/cornell.obj",
               ["Cornell box after the published Cornell measurements (mm).",
                "Counter-clockwise = front. Kd: Lambertian albedo; Ke: radiance, front side only."],
               groups)
     write_mtl("assets/cornell/cornell.mtl",
               ["Albedos: RGB reductions of the measured reflectance spectra. Light: Ke = radiance."],
-              CORNELL_ALBEDOS)
+              CORNELL_ALBEDOS + [CORNELL_LIGHT])
     write_json("assets/cornell/cornell.json", CORNELL_CAMERA)
+
+
+def cornell_blocks():
+    """The short and the tall block, as (name, material, polygons) groups."""
+    return [("short_block", "white", block(SHORT_BLOCK)), ("tall_block", "white", block(TALL_BLOCK))]
+
+
+def cornell_point():
+    # Irradiance under the area light, about Le A / d^2 = 17 * 130 * 105 / 548^2 = 0.77 in red;
+    # the point light gives I / d^2 at d = 540 mm, so I = 13000 * (17, 12, 4) W/sr.
+    os.makedirs("tests/data/cornell_point", exist_ok=True)
+    groups, _ = cornell_room()
+    write_obj("tests/data/cornell_point/cornell_point.obj",
+              ["The Cornell box's room and blocks (mm) without the area light: the point light of",
+               "cornell_point.json lights it. Counter-clockwise = front. Kd: Lambertian albedo."],
+              groups + cornell_blocks())
+    write_mtl("tests/data/cornell_point/cornell_point.mtl",
+              ["Albedos: RGB reductions of the measured reflectance spectra."], CORNELL_ALBEDOS)
+    write_json("tests/data/cornell_point/cornell_point.json",
+               {**CORNELL_CAMERA, "width": 64, "height": 64,
+                "lights": [{"type": "point", "position": [278, 540, 279.6],
+                            "intensity": [221000, 156000, 52000]}]})
 
 
 def cornell_glass():
@@ -154,7 +179,7 @@ def cornell_glass():
     write_mtl("assets/cornell-glass/cornell-glass.mtl",
               ["The Cornell box's albedos and light; glass: a smooth dielectric (illum 7) of index",
                "Ni, filter Tf; mirror: a perfect mirror (illum 3, Pr 0) of Fresnel F0 = Ks."],
-              CORNELL_ALBEDOS + [("glass", [("illum", [7]), ("Ni", [1.5]), ("Tf", [1, 1, 1])]),
+              CORNELL_ALBEDOS + [CORNELL_LIGHT, ("glass", [("illum", [7]), ("Ni", [1.5]), ("Tf", [1, 1, 1])]),
                                  ("mirror", [("illum", [3]), ("Ks", [0.95, 0.95, 0.95]), ("Pr", [0])])])
     write_json("assets/cornell-glass/cornell-glass.json", CORNELL_CAMERA)
 
@@ -256,6 +281,7 @@ def glossy():
 
 if __name__ == "__main__":
     cornell()
+    cornell_point()
     cornell_glass()
     furnace()
     glossy()

@@ -17,7 +17,7 @@ packages=(
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
   python3-glad xvfb xauth gnuplot-nox clang libclang-rt-14-dev
-  dpkg-dev  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB)
+  dpkg-dev lintian  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB); lintian checks it
   assimp-testmodels  # test data: real OBJ and glTF models (tests/app/test_default_view.cpp, the bench)
 )
 if ((peers)); then packages+=(embree-tools blender); fi

@@ -14,7 +14,15 @@
 namespace strata::test {
 
 std::filesystem::path sourceDir() { return STRATA_SOURCE_DIR; }
-std::filesystem::path sharedDir() { return STRATA_SHARED_DIR; }
+std::filesystem::path testScene(const std::string& name) {
+    return sourceDir() / "tests" / "data" / name / (name + ".obj");
+}
+
+std::optional<std::filesystem::path> sharedDir() {
+    const std::filesystem::path shared = STRATA_SHARED_DIR;
+    if (!std::filesystem::is_directory(shared)) return std::nullopt;
+    return shared;
+}
 
 ScratchDir::~ScratchDir() {
     std::error_code ignored;  // a destructor must not throw; a leftover folder is harmless
@@ -34,6 +42,12 @@ std::string fileBytes(const std::filesystem::path& path) {
     std::ostringstream bytes;
     bytes << in.rdbuf();
     return bytes.str();
+}
+
+std::set<std::string> folderEntries(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    return names;
 }
 
 std::string forgedTga() {
@@ -58,6 +72,12 @@ CommandResult runCommand(const std::string& commandLine) {
 
 CommandResult runStrata(const std::string& arguments) {
     return runCommand(std::string(STRATA_BINARY) + " " + arguments);
+}
+
+std::optional<std::string> obeyingPermissions() {
+    if (geteuid() != 0) return "";
+    if (std::system("command -v setpriv >/dev/null 2>&1") != 0) return std::nullopt;
+    return "setpriv --bounding-set=-dac_override,-dac_read_search ";
 }
 
 MeanEstimate estimateMean(const std::vector<double>& values) {

@@ -3,6 +3,8 @@
 // the statistics that turn "close enough" into k standard errors.
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,7 +34,12 @@ inline constexpr bool kSanitizedBuild = false;
 #endif
 
 std::filesystem::path sourceDir();
-std::filesystem::path sharedDir();
+// The scene the suite keeps in tests/data/NAME/NAME.obj (scripts/make_assets.py writes them).
+std::filesystem::path testScene(const std::string& name);
+// The optional shared collection beside the checkout (../shared), when it is there: a test that
+// reads it says it is skipped without it (MESSAGE) and passes; every scene a test needs is in the
+// repository.
+std::optional<std::filesystem::path> sharedDir();
 // A fresh empty folder for one test's files, removed with everything in it when the test's
 // handle goes out of scope, so runs do not pile up folders in the temp directory. It is a path,
 // so `dir / "file"` and every function taking a path accept it.
@@ -52,6 +59,8 @@ struct CommandResult {
 };
 // The file's bytes; empty when it cannot be read.
 std::string fileBytes(const std::filesystem::path& path);
+// The names of the folder's entries (to check that nothing was left behind in it).
+std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
 // would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
 std::string forgedTga();
@@ -59,6 +68,10 @@ std::string forgedTga();
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);
+// A command-line prefix under which a child obeys file permissions as other users do: empty for
+// them, for root setpriv dropping the capabilities that override them (CAP_DAC_OVERRIDE,
+// CAP_DAC_READ_SEARCH). Empty optional when root has no setpriv.
+std::optional<std::string> obeyingPermissions();
 
 // Mean and standard error of the mean of a sample.
 struct MeanEstimate {

@@ -8,6 +8,7 @@
 #include "bench/bench_output.h"
 #include "bench/bench_race.h"
 #include "bench/strata_child.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -85,7 +86,7 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     table.add({"strata view with its panel (" + viewReports.context + ")", cell("%.3f", viewSeconds),
                cell("%.3f", paths / viewSeconds * 1e-6), cell("%.1f", median(viewReports.p50)),
                cell("%.1f", median(viewReports.p95))});
-    writeTextFile(settings.outDir / "viewer.csv", table.csv());
+    writeFile(settings.outDir / "viewer.csv", table.csv());
     return kTitle +
            cell("%s, %dx%d, %d spp, depth %d, the default sampler (%s) and transport, %s; whole "
                 "processes including start-up and loading, runs alternated.\n\n",

@@ -3,8 +3,8 @@
 // tonemapped sRGB. An EXR also holds the image's alpha, when it has one, as its A channel: a
 // render's coverage, the share of each pixel's camera rays that found a surface. Its RGB is the
 // radiance as rendered, the backdrop (film/backdrop.h) included where A < 1, so it is premultiplied
-// by A only over a black backdrop. Every write goes to a temporary file beside the target and is renamed over it
-// only when complete, so a failed or interrupted write never leaves a half-written output.
+// by A only over a black backdrop. Every write goes through an OutputFile (io/output_file.h): to a
+// temporary file created exclusively beside the target, renamed over it only when complete.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -33,11 +33,17 @@ struct PngSettings {
     Tonemap tonemap = Tonemap::Clamp;
 };
 
+class OutputFile;
+
 enum class ImageFormat { Exr, Pfm, Png };
-// The format named by the path's extension; throws strata::Error for any other.
+// The format named by the path's extension, in any letter case; throws strata::Error
+// "PATH: unknown image format (use .exr, .pfm or .png)" for any other.
 ImageFormat imageFormatOf(const std::filesystem::path& path);
 
 void writeImage(const std::filesystem::path& path, const Image& image, const PngSettings& png = {});
+// Encodes `image` into `file` in the format of its target's extension, leaving the commit to the
+// caller (who may first encode the other files of one result, so that all or none replace theirs).
+void writeImage(OutputFile& file, const Image& image, const PngSettings& png = {});
 // Writes already display-encoded 8-bit RGB (top row first) as PNG, e.g. a screenshot of the viewer.
 void writeRgb8Png(const std::filesystem::path& path, int width, int height,
                   const std::vector<uint8_t>& rgb);
@@ -49,6 +55,9 @@ void requirePlausibleImageSize(long long width, long long height, size_t fileByt
 // Reads the R, G, B (and A, when there is one) channels of an EXR file as linear float; throws
 // strata::Error naming the file.
 Image readExr(const std::filesystem::path& path);
+// The bytes of an EXR file, undecoded; throws strata::Error "PATH: no such EXR file" or
+// "PATH: cannot open EXR file".
+std::string readExrFile(const std::filesystem::path& path);
 // The same from an EXR file's bytes, as a scene bundle carries them; `name` stands for the file
 // in messages.
 Image readExr(std::string_view bytes, const std::string& name);

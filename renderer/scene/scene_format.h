@@ -83,6 +83,10 @@ struct SceneBundle {
     // SceneReadOptions::allowOutsideFiles allows (scene_folder.h); parseScene reports them among
     // the warnings. Kept where the bundle was read, which is where messages are printed.
     std::vector<std::string> outsideNotes = {};
+    // The environment map a front end was given in place of the description's (strata's --env),
+    // named as given. parseScene leaves it to that front end, which holds its other settings
+    // (the rotation); it travels here so that every MPI rank decodes the bytes rank 0 read.
+    std::optional<SceneFile> environmentMap = std::nullopt;
 
     // The file of that name among `files`; null when there is none.
     const SceneFile* find(std::string_view name) const;

@@ -6,13 +6,14 @@
 
 namespace strata {
 
+// Bad input: a file that is missing, unreadable, malformed or cannot be written (exit status 1).
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
-// An option given a value it cannot take, or options that do not go together: a usage error,
-// which the command line reports with exit status 2 where an input error exits with 1.
+// Bad usage: the command line itself is wrong, whatever the files hold: an unknown option or
+// value, a value out of range, options that exclude each other (exit status 2).
 class UsageError : public Error {
 public:
     using Error::Error;

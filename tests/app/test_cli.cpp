@@ -339,8 +339,8 @@ TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is na
         std::string says;
     };
     const std::vector<Case> cases = {
-        {"render " + furnace() + " --sp 24", 2, "strata: render: unknown option '--sp' (did you mean --spp?)"},
-        {"render " + furnace() + " --env-colour 1 1 1", 2, "unknown option '--env-colour' (did you mean --env-color?)"},
+        {"render " + furnace() + " --sp 24", 2, "strata: unknown option '--sp'; did you mean '--spp'? (see strata render --help)"},
+        {"render " + furnace() + " --env-colour 1 1 1", 2, "unknown option '--env-colour'; did you mean '--env-color'?"},
         {"render " + furnace() + " --nonsense-option", 2, "unknown option '--nonsense-option' (see strata render --help)"},
         {"render " + furnace() + " --spp -5", 2, "--spp: must be a positive multiple of 24"},
         {"render " + furnace() + " --width 0", 2, "--width: must be in 1..65536"},
@@ -359,5 +359,5 @@ TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is na
         CHECK(result.err.find(c.says) != std::string::npos);
     }
     // --help says so.
-    CHECK(test::runStrata("--help").out.find("2 a usage error") != std::string::npos);
+    CHECK(test::runStrata("--help").out.find("2 bad usage") != std::string::npos);
 }

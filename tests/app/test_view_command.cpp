@@ -73,6 +73,20 @@ TEST_CASE("view rejects bad options with one line and a non-zero exit") {
     CHECK(shot.err.find("--screenshot") != std::string::npos);
 }
 
+TEST_CASE("view --screenshot takes any letter case of .png, and a folder it cannot write fails before the viewer opens") {
+    const auto dir = test::scratchDir("view-screenshot");
+    const auto shot = dir / "SHOT.PNG";
+    const std::string view = "view --headless=osmesa --frames 1 --window 32 32 --threads 1 --screenshot ";
+    const auto written = test::runStrata(view + shot.string());
+    REQUIRE_MESSAGE(written.exitCode == 0, written.err);
+    CHECK(readPng(shot).width == 32);
+    const auto missing = test::runStrata(view + (dir / "no" / "shot.png").string());
+    CHECK(missing.exitCode == 1);
+    // One line: no scene was read (its summary line) and no context opened.
+    CHECK(missing.err == "strata: --screenshot: " + (dir / "no" / "shot.png").string() +
+                             ": cannot write: no such folder " + (dir / "no").string() + "\n");
+}
+
 TEST_CASE("the windowed viewer under Xvfb shows the panel and, beside it, the Cornell box") {
     REQUIRE_MESSAGE(std::system("command -v xvfb-run >/dev/null 2>&1") == 0,
                     "xvfb-run is missing (scripts/setup.sh installs xvfb)");

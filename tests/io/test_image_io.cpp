@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <unistd.h>
 
 #include "film/accumulation_buffer.h"
 #include "util/error.h"
@@ -92,6 +93,38 @@ TEST_CASE("image io: a failed write leaves an existing file untouched") {
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
     }
+}
+
+TEST_CASE("image io: images and screenshots never write through a symlink planted at a temporary name") {
+    const auto dir = test::scratchDir("image-symlinks");
+    std::ofstream(dir / "victim") << "precious";
+    const std::string pid = std::to_string(getpid());
+    for (const char* name : {"a.exr", "a.pfm", "a.png", "shot.png"}) {
+        // The names a writer in this process would try first, then the first free one.
+        for (const std::string& suffix : {".tmp-" + pid, ".tmp" + pid, ".tmp-" + pid + "-0", ".tmp-" + pid + "-1"}) {
+            std::filesystem::create_symlink(dir / "victim", dir / (name + suffix));
+        }
+    }
+    writeImage(dir / "a.exr", gradient());
+    writeImage(dir / "a.pfm", gradient());
+    writeImage(dir / "a.png", gradient());
+    writeRgb8Png(dir / "shot.png", 2, 1, {255, 0, 0, 0, 255, 0});
+    CHECK(test::fileBytes(dir / "victim") == "precious");
+    CHECK(readExr(dir / "a.exr").pixels == gradient().pixels);
+    for (const char* name : {"a.pfm", "a.png", "shot.png"}) CHECK(std::filesystem::file_size(dir / name) > 8);
+}
+
+TEST_CASE("image io: the format comes from the extension in any letter case") {
+    CHECK(imageFormatOf("a.EXR") == ImageFormat::Exr);
+    CHECK(imageFormatOf("a.Pfm") == ImageFormat::Pfm);
+    CHECK(imageFormatOf("dir.png/a.PNG") == ImageFormat::Png);
+    CHECK_THROWS_WITH_AS(imageFormatOf("a.png.bmp"), "a.png.bmp: unknown image format (use .exr, .pfm or .png)", Error);
+    CHECK_THROWS_WITH_AS(imageFormatOf("png"), "png: unknown image format (use .exr, .pfm or .png)", Error);
+    const auto dir = test::scratchDir("image-case");
+    writeImage(dir / "a.EXR", gradient());
+    CHECK(readExr(dir / "a.EXR").pixels == gradient().pixels);
+    writeRgb8Png(dir / "shot.PNG", 1, 1, {1, 2, 3});
+    CHECK(test::fileBytes(dir / "shot.PNG").substr(1, 3) == "PNG");
 }
 
 TEST_CASE("image io: an image's size must fit 2^28 pixels and its file's bytes") {

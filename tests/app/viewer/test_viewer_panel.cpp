@@ -398,7 +398,7 @@ TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sli
 TEST_CASE("depth from epsilon leaves the depth alone where no finite depth bounds the error") {
     ViewerSettings settings = smallSingleView();
     settings.single.depth = 3;
-    Harness h(settings, test::sharedDir() / "scenes/cornell_point/scene.obj");
+    Harness h(settings, test::testScene("cornell_point"));
     h.click("depth from epsilon");
     CHECK(h.viewer.workerConfig().sides.at(0).depth == 3);  // point lights: no radiance bound
 }
