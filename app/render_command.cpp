@@ -126,7 +126,7 @@ void RenderCommand::run() const {
                      passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
     }
 
-    const Image image = Image::fromMeans(buffer);
+    const Image image = buffer.meanImage();
     for (const auto& out : outputs) {
         writeImage(out, image, PngSettings{exposure, tonemapKind});
         std::fprintf(stderr, "wrote %s\n", out.c_str());

@@ -130,7 +130,7 @@ struct RenderWorker::Job {
     // standard error of the mean luminance.
     double curveError(const Side& side) const {
         const AccumulationBuffer& buffer = side.session.buffer();
-        if (againstReference()) return imageError(Image::fromMeans(buffer), *reference).rmse;
+        if (againstReference()) return imageError(buffer.meanImage(), *reference).rmse;
         double squares = 0.0;
         for (size_t p = 0; p < buffer.pixelCount(); ++p) {
             const double e = pixelStandardError(buffer, p, side.stratified);

@@ -15,6 +15,8 @@
 
 namespace strata {
 
+struct Image;
+
 class AccumulationBuffer {
 public:
     AccumulationBuffer(int width, int height);
@@ -40,6 +42,9 @@ public:
     uint64_t droppedSamples() const;
     // Mean of all pixel means (linear RGB).
     glm::dvec3 imageMean() const;
+    // Every pixel's mean as an image (io/image_io.h), as files and image metrics take it: the
+    // film hands its estimate to io, which knows nothing of films.
+    Image meanImage() const;
 
     // The buffer's whole state as flat arrays in a fixed order (the RGB sums as 3 doubles a pixel).
     // Every entry is a sum over samples or passes, so buffers of one image that saw disjoint passes

@@ -14,7 +14,6 @@
 #include <ImfOutputFile.h>
 #include <stb_image_write.h>
 
-#include "film/accumulation_buffer.h"
 #include "util/text_file.h"
 #include "util/error.h"
 
@@ -95,13 +94,6 @@ private:
 };
 
 }  // namespace
-
-Image Image::fromMeans(const AccumulationBuffer& buffer) {
-    Image image{buffer.width(), buffer.height(), {}};
-    image.pixels.resize(buffer.pixelCount());
-    for (size_t i = 0; i < buffer.pixelCount(); ++i) image.pixels[i] = glm::vec3(buffer.mean(i));
-    return image;
-}
 
 ImageFormat imageFormatOf(const std::filesystem::path& path) {
     const std::string extension = path.extension().string();

@@ -13,14 +13,10 @@
 
 namespace strata {
 
-class AccumulationBuffer;
-
 struct Image {
     int width = 0;
     int height = 0;
     std::vector<glm::vec3> pixels;  // row-major, top row first, linear RGB
-
-    static Image fromMeans(const AccumulationBuffer& buffer);
 };
 
 struct PngSettings {
