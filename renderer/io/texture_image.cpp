@@ -1,6 +1,5 @@
 #include "io/texture_image.h"
 
-#include <cmath>
 #include <cstring>
 #include <memory>
 #include <vector>
@@ -24,19 +23,6 @@ Texture decodeExr(std::string_view bytes, const std::string& name) {
 
 }  // namespace
 
-const std::array<float, 256>& srgbDecodingTable() {
-    static const std::array<float, 256> table = [] {
-        std::array<float, 256> t{};
-        for (int code = 0; code < 256; ++code) {
-            const double c = code / 255.0;
-            t[static_cast<size_t>(code)] =
-                static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-        }
-        return t;
-    }();
-    return table;
-}
-
 Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEncoding encoding) {
     const auto fail = [&](const std::string& reason) -> Error {
         return Error(name + ": cannot decode the texture (" + reason + ")");
@@ -54,17 +40,8 @@ Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEn
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 0), stbi_image_free);
     if (!pixels) throw fail(stbi_failure_reason());
-    const auto& srgb = srgbDecodingTable();
-    // Grey and grey-alpha images have their colour in channel 0 only; the last of 2 or 4 is alpha.
-    const int colourChannels = channels == 1 || channels == 3 ? channels : channels - 1;
-    std::vector<float> texels(static_cast<size_t>(width) * height * channels);
-    for (size_t i = 0; i < texels.size(); ++i) {
-        const stbi_uc code = pixels.get()[i];
-        const bool colour = encoding == TextureEncoding::Colour &&
-                            static_cast<int>(i % static_cast<size_t>(channels)) < colourChannels;
-        texels[i] = colour ? srgb[code] : static_cast<float>(code) / 255.0f;
-    }
-    return Texture(width, height, channels, std::move(texels));
+    const size_t codes = static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels);
+    return Texture(width, height, channels, std::vector<uint8_t>(pixels.get(), pixels.get() + codes), encoding);
 }
 
 }  // namespace strata
