@@ -32,12 +32,17 @@ void writeImage(const std::filesystem::path& path, const Image& image, const Png
 // Writes already display-encoded 8-bit RGB (top row first) as PNG, e.g. a screenshot of the viewer.
 void writeRgb8Png(const std::filesystem::path& path, int width, int height,
                   const std::vector<uint8_t>& rgb);
+// The densest coding any reader here decodes without a tighter bound of its own: a 1-bit PNG at
+// deflate's best ratio (1032:1), 8256 pixels a byte.
+inline constexpr long long kDensestPixelsPerByte = 8 * 1032;
 // Throws strata::Error "NAME: ..." unless a width x height image could be held in `fileBytes`
-// bytes: at most 2^28 pixels (16k x 16k), and no more than the densest coding any reader here
-// decodes allows, a 1-bit PNG at deflate's best ratio (1032:1), 8256 pixels a byte. A forged or
-// truncated header then fails at once instead of allocating for pixels the file does not hold.
-void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name);
-// Reads the R, G, B channels of an EXR file as linear float; throws strata::Error naming the file.
+// bytes: at most 2^28 pixels (16k x 16k), and no more than `maxPixelsPerByte`, the densest coding
+// of the file's format, allows. A forged or truncated header then fails at once instead of
+// allocating for pixels the file does not hold.
+void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name,
+                               long long maxPixelsPerByte = kDensestPixelsPerByte);
+// Reads the R, G, B channels of an EXR file as linear float; throws strata::Error naming the file,
+// before anything is allocated for a header the file does not hold the pixels of (readExrHeader).
 Image readExr(const std::filesystem::path& path);
 // The same from an EXR file's bytes, as a scene bundle carries them; `name` stands for the file
 // in messages.

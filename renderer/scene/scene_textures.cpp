@@ -22,7 +22,11 @@ std::shared_ptr<const Texture> SceneTextures::bytes(const std::string& key, std:
     std::shared_ptr<const Texture> texture;
     try {
         // Named as the scene names it: `where` already says which file refers to it.
-        texture = std::make_shared<const Texture>(decodeTexture(data, key, encoding));
+        std::vector<std::string> damage;
+        texture = std::make_shared<const Texture>(decodeTexture(data, key, encoding, damage));
+        if (!damage.empty() && damaged_.insert(key).second) {
+            for (const std::string& line : damage) warnings_.push_back(where + ": " + line);
+        }
     } catch (const Error& error) {
         warnings_.push_back(where + ": " + error.what() + "; using the factor alone");
     }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +18,8 @@ namespace strata {
 
 class SceneTextures {
 public:
-    // `warnings` receives one line per texture that cannot be used; both outlive this.
+    // `warnings` receives one line per texture that cannot be used, or that decodes despite
+    // damage (once per file); both outlive this.
     SceneTextures(const SceneBundle& bundle, std::vector<std::string>& warnings)
         : bundle_(bundle), warnings_(warnings) {}
 
@@ -32,6 +34,7 @@ private:
     const SceneBundle& bundle_;
     std::vector<std::string>& warnings_;
     std::map<std::pair<std::string, TextureEncoding>, std::shared_ptr<const Texture>> decoded_;
+    std::set<std::string> damaged_;  // the files whose damage was reported
 };
 
 }  // namespace strata

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "util/error.h"
+#include "image_support.h"
 #include "io/image_io.h"
 #include "test_support.h"
 
@@ -177,6 +178,10 @@ const std::vector<BadInputCase> kCliCases = {
     {"--env-color of two numbers", {}, "render {dir}/s.obj --env-color 1 1", "--env-color"},
     {"--env with --env-color", {}, "render {dir}/s.obj --env none --env-color 1 1 1", "--env excludes --env-color"},
     {"--env-rotate not finite", {}, "render {dir}/s.obj --env-rotate inf", "--env-rotate: must be a finite angle"},
+    {"--env map claiming 23170 x 11585 pixels in 93 KB without pixel data", {{"sky.exr", test::forgedExr(23170, 11585)}},
+     "render {dir}/s.obj --env {dir}/sky.exr",
+     "sky.exr: not a readable EXR file (23170 x 11585 pixels, but chunk 1 of 11585 of their data lies outside the "
+     "file's 92993 bytes: truncated or corrupt)"},
     {"unknown subcommand", {}, "paint", "unknown command 'paint'"},
     // strata samples options
     {"samples --passes 0", {}, "samples --passes 0", "--passes: must be in 1..1000000"},
@@ -231,6 +236,20 @@ const std::vector<ToleratedCase> kToleratedCases = {
     {"MTL texture that does not decode",
      {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd bad.png\n"}, {"bad.png", "\x89PNG\r\n\x1a\nbroken"}},
      {"s.mtl:4: map_Kd: bad.png: cannot decode the texture (unknown image type); using the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a GIF claiming 16384 x 16384 pixels in 40 KB",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd big.gif\n"}, {"big.gif", test::forgedGif(16384, 16384, 40000)}},
+     {"s.mtl:4: map_Kd: big.gif: a 16384 x 16384 image cannot be stored in 40000 bytes (truncated or corrupt); using "
+      "the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a JPEG claiming 16384 x 16384 pixels in 40 KB",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd big.jpg\n"}, {"big.jpg", test::forgedJpeg(16384, 16384, 40960)}},
+     {"s.mtl:4: map_Kd: big.jpg: a 16384 x 16384 image cannot be stored in 40960 bytes (truncated or corrupt); using "
+      "the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a truncated JPEG",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd cut.jpg\n"}, {"cut.jpg", test::truncatedJpeg()}},
+     {"s.mtl:4: map_Kd: cut.jpg: damaged or truncated JPEG (libjpeg: Corrupt JPEG data: premature end of data segment)"},
      "2 emitting"},
     {"MTL texture whose header claims more texels than its file holds",
      {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd t.tga\n"}, {"t.tga", test::forgedTga()}},
