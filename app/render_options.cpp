@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "bundled_assets.h"
 #include "util/error.h"
@@ -50,6 +51,18 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_flag("--watertight", watertight,
                      "Always trace with Embree's watertight triangle test (default: only where the "
                      "scene's rounding gap share needs it)");
+    command
+        .add_option("--texture-budget", textureBudget,
+                    "GiB that the scene's decoded textures and environment map may take together; a "
+                    "file that would go over is refused before it is decoded")
+        ->capture_default_str()
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                // Finite and positive, and no more than 2^24 GiB, which a byte count holds.
+                const double gib = std::strtod(text.c_str(), nullptr);
+                return gib > 0.0 && gib <= 16777216.0 ? std::string() : "must be a positive number of GiB";
+            },
+            "GIB"));
 }
 
 std::vector<std::string> RenderOptions::arguments() const {
@@ -84,6 +97,9 @@ std::vector<std::string> RenderOptions::arguments() const {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
     if (watertight) args.push_back("--watertight");
+    if (textureBudget != defaults.textureBudget) {
+        args.insert(args.end(), {"--texture-budget", text(textureBudget)});
+    }
     return args;
 }
 
@@ -142,7 +158,8 @@ Environment RenderOptions::environment() const {
         environment.kind = Environment::Kind::None;
     } else if (!env.empty()) {
         environment.kind = Environment::Kind::Map;
-        const EnvironmentMapFile file = readEnvironmentMap(env);
+        // Checked against the whole budget: the scene's textures are not read yet.
+        const EnvironmentMapFile file = readEnvironmentMap(env, TextureBudget(sceneBudget().textureBytes));
         if (file.zeroedNegatives > 0) {
             std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
                          env.c_str(), file.zeroedNegatives);
@@ -153,9 +170,15 @@ Environment RenderOptions::environment() const {
     return environment;
 }
 
+SceneBudget RenderOptions::sceneBudget() const {
+    SceneBudget budget;
+    budget.textureBytes = static_cast<uint64_t>(std::llround(std::ldexp(textureBudget, 30)));
+    return budget;
+}
+
 LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
-    LoadedScene loaded =
-        strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic);
+    const Traversal traversal = watertight ? Traversal::Watertight : Traversal::Automatic;
+    LoadedScene loaded = strata::parseScene(std::move(files), traversal, sceneBudget());
     // The --env options override the scene description's environment; without them it stands.
     if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
     return loaded;

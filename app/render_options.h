@@ -33,6 +33,7 @@ struct RenderOptions {
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
+    double textureBudget = 4.0;   // --texture-budget, GiB of decoded texels (texture_budget.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);
@@ -47,6 +48,8 @@ struct RenderOptions {
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
     Environment environment() const;
+    // What the scene may take: --texture-budget in bytes.
+    SceneBudget sceneBudget() const;
     // Builds the scene from its files; `environment` (environment(), read once by the caller),
     // unless Default, overrides the scene description's.
     LoadedScene parseScene(SceneBundle files, const Environment& environment) const;

@@ -57,6 +57,7 @@ void ViewCommand::run() const {
     viewer::ViewerSettings viewerSettings;
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
+    viewerSettings.budget = render.sceneBudget();
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;

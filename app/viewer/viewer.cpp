@@ -57,7 +57,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
         return;
     }
     try {
-        LoadedScene loaded = parseScene(readSceneBundle(path), settings_.traversal);
+        LoadedScene loaded = parseScene(readSceneBundle(path), settings_.traversal, settings_.budget);
         if (settings_.environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(settings_.environment);
         scene_ = std::make_shared<LoadedScene>(std::move(loaded));
         camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
@@ -74,7 +74,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
     try {
-        const EnvironmentMapFile file = readEnvironmentMap(exrPath);
+        const EnvironmentMapFile file = readEnvironmentMap(exrPath, TextureBudget(settings_.budget.textureBytes));
         settings_.environment.kind = Environment::Kind::Map;
         settings_.environment.map = file.map;
         relight();

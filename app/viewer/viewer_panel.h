@@ -16,6 +16,7 @@
 
 #include "display_pipeline.h"
 #include "lights/environment.h"
+#include "scene/scene_format.h"
 #include "scene/traversal_precision.h"
 #include "render_worker.h"
 
@@ -47,6 +48,8 @@ struct ViewerSettings {
     Environment environment;
     // The triangle test of every scene opened (--watertight: always the watertight one).
     Traversal traversal = Traversal::Automatic;
+    // What every scene and environment map opened may take (--texture-budget).
+    SceneBudget budget;
 
     // The sides the worker renders in the current mode.
     std::vector<SideConfig> sides() const;

@@ -1,6 +1,6 @@
 #pragma once
-// JPEG files through libjpeg(-turbo): the header first, so that a texture's size is checked
-// before its pixels are allocated, then the pixels at 8 bits a channel, straight into
+// JPEG files through libjpeg(-turbo): the header first, so that a texture's size is checked and
+// budgeted before its pixels are allocated, then the pixels at 8 bits a channel, straight into
 // the texture's storage, a row at a time.
 //
 // libjpeg, unlike stb_image, says when the data of a JPEG ends before its image does (a truncated

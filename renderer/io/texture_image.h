@@ -10,7 +10,8 @@
 // already and taken as they are.
 //
 // A file's header is read first (readTextureHeader), so that a size the file cannot hold is
-// refused before anything is allocated for its texels.
+// refused, and a scene's texture budget applied (textures/texture_budget.h), before anything is
+// allocated for its texels.
 #include <string>
 #include <string_view>
 #include <vector>

@@ -156,7 +156,7 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path) {
     return files;
 }
 
-ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report) {
+ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
     const SceneFile& main = bundle.files.front();
     const std::string path = bundle.pathOf(main.name);
     // tinygltf takes a non-const user pointer; the bundle callbacks only read through it.
@@ -166,12 +166,13 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report) {
         main.bytes, path, tinygltf::FsCallbacks{bundleFileExists, sameName, readBundleFile, nullptr, files}, &images);
     GltfModel gltf{model, path, images, {}};
     std::vector<std::string> textureWarnings;
-    SceneTextures textures(bundle, textureWarnings);
+    SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes));
     size_t dropped = 0;
     ParsedScene parsed = flattenGltfScene(gltf, textures, dropped);
     if (report) {
         report->faces = parsed.mesh.triangles.size();
         report->droppedTriangles = dropped;
+        report->textureBytes = textures.budget().used();
         report->warnings.insert(report->warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
         report->warnings.insert(report->warnings.end(), textureWarnings.begin(), textureWarnings.end());
     }

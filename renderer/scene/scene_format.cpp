@@ -11,8 +11,8 @@ namespace strata {
 namespace {
 
 // An OBJ carries no camera.
-ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report) {
-    return {parseObjScene(bundle, report), std::nullopt};
+ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
+    return {parseObjScene(bundle, report, budget), std::nullopt};
 }
 
 // Every format Strata reads. A new one is its loader and one line here.
@@ -85,11 +85,11 @@ void splitIntoLines(std::vector<std::string>& warnings, size_t from) {
 }
 }  // namespace
 
-ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report) {
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");
     const size_t before = report ? report->warnings.size() : 0;
-    ParsedScene parsed = format.parse(bundle, report);
+    ParsedScene parsed = format.parse(bundle, report, budget);
     if (report) splitIntoLines(report->warnings, before);
     return parsed;
 }

@@ -13,6 +13,7 @@
 
 #include "scene/camera.h"
 #include "scene/mesh.h"
+#include "textures/texture_budget.h"
 
 namespace strata {
 
@@ -20,10 +21,17 @@ struct LoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
     size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
+    uint64_t textureBytes = 0;    // the decoded texels of the materials' textures (texture_budget.h)
     // What was tolerated and how, or what the scene file holds that Strata does not render (yet),
     // one line each naming the file and line where there is one:
     // "cube.obj:12: material 'red' is not defined; using grey Kd 0.8".
     std::vector<std::string> warnings;
+};
+
+// What a scene may take of memory, refused past that with the option that raises it: by default
+// what a desktop survives.
+struct SceneBudget {
+    uint64_t textureBytes = kDefaultTextureBudget;  // --texture-budget: all decoded texels together
 };
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
@@ -62,8 +70,9 @@ struct SceneFormat {
     // The main file (`path`, which exists) and every file it refers to; throws strata::Error
     // naming a missing or malformed file.
     std::vector<SceneFile> (*read)(const std::filesystem::path& path);
-    // The mesh (and camera) from a bundle's files; throws strata::Error naming the file (and line).
-    ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report);
+    // The mesh (and camera) from a bundle's files, its textures within `budget`; throws
+    // strata::Error naming the file (and line).
+    ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget);
 };
 
 // The format of `path` by its extension, in any case; throws strata::Error
@@ -75,7 +84,8 @@ const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
 std::string knownSceneExtensions();
 
 // The mesh and camera of `bundle`, parsed by the format of its main file.
-ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report = nullptr);
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report = nullptr,
+                           const SceneBudget& budget = {});
 
 // The mesh alone: parseSceneFile(...).mesh.
 MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report = nullptr);

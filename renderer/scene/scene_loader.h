@@ -32,9 +32,11 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
 // own (glTF), else framing the scene; `traversal` picks Embree's triangle test
-// (traversal_precision.h).
-// Throws strata::Error naming the bad file.
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic);
+// (traversal_precision.h); the textures and the description's environment map are decoded
+// within `budget`.
+// Throws strata::Error naming the bad file, or the texture or map that would go over the budget.
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic,
+                       const SceneBudget& budget = {});
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,

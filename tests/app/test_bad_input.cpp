@@ -182,6 +182,14 @@ const std::vector<BadInputCase> kCliCases = {
      "render {dir}/s.obj --env {dir}/sky.exr",
      "sky.exr: not a readable EXR file (23170 x 11585 pixels, but chunk 1 of 11585 of their data lies outside the "
      "file's 92993 bytes: truncated or corrupt)"},
+    // Texture budget
+    {"texture over --texture-budget",
+     {{"s.mtl", kMtl + "map_Kd t.png\n"}, {"t.png", test::pngFile(64, 64, 8, 2, std::string(64 * (1 + 64 * 3), '\0'))}},
+     "render {dir}/s.obj --texture-budget 0.00001",
+     "s.mtl:4: map_Kd: texture 't.png' is 64 x 64, 3 channels of 8 bits (12.0 KiB); with it the scene's textures "
+     "would take 12.0 KiB, over the --texture-budget of 10.5 KiB"},
+    {"render --texture-budget 0", {}, "render {dir}/s.obj --texture-budget 0",
+     "--texture-budget: must be a positive number of GiB"},
     {"unknown subcommand", {}, "paint", "unknown command 'paint'"},
     // strata samples options
     {"samples --passes 0", {}, "samples --passes 0", "--passes: must be in 1..1000000"},
