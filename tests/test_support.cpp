@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <glm/geometric.hpp>
@@ -41,6 +42,12 @@ std::string forgedTga() {
     tga[2] = 10;  // run-length encoded true colour
     tga[12] = '\x30', tga[13] = '\x0a', tga[14] = '\x76', tga[15] = '\x74', tga[16] = 32;
     return tga + std::string(8, '\x7f');
+}
+
+long peakRssKilobytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
 }
 
 CommandResult runCommand(const std::string& commandLine) {

@@ -55,6 +55,8 @@ std::string fileBytes(const std::filesystem::path& path);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
 // would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
 std::string forgedTga();
+// The process's peak resident memory so far (getrusage), in KB.
+long peakRssKilobytes();
 // Runs a shell command line, capturing its output.
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).

@@ -2,8 +2,6 @@
 // does not hold is refused before anything is allocated for it.
 #include <doctest/doctest.h>
 
-#include <sys/resource.h>
-
 #include "image_support.h"
 #include "io/exr_header.h"
 #include "io/image_io.h"
@@ -11,14 +9,6 @@
 #include "util/error.h"
 
 using namespace strata;
-
-namespace {
-long peakRssKilobytes() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss;
-}
-}  // namespace
 
 TEST_CASE("exr header: the size of a written file, scanline and every chunk in place") {
     const auto dir = test::scratchDir("exr-header");
@@ -36,9 +26,9 @@ TEST_CASE("exr header: 23170 x 11585 pixels claimed by 93 KB without pixel data 
                                  "their data lies outside the file's 92993 bytes: truncated or corrupt)";
     CHECK_THROWS_WITH_AS(readExrHeader(forged, "big.exr"), expected.c_str(), Error);
     // readExr allocated the 3 GB of floats before OpenEXR found the first chunk missing.
-    const long before = peakRssKilobytes();
+    const long before = test::peakRssKilobytes();
     CHECK_THROWS_WITH_AS(readExr(forged, "big.exr"), expected.c_str(), Error);
-    if (!test::kSanitizedBuild) CHECK(peakRssKilobytes() - before < 64 * 1024);
+    if (!test::kSanitizedBuild) CHECK(test::peakRssKilobytes() - before < 64 * 1024);
     // A real file cut anywhere past its header is refused the same way.
     const auto dir = test::scratchDir("exr-cut");
     writeImage(dir / "a.exr", Image{64, 64, std::vector<glm::vec3>(64 * 64, glm::vec3(0.25f))});
