@@ -13,7 +13,8 @@ namespace {
 
 // A Huffman-coded JPEG spends at least one bit on each 8 x 8 block of its full-resolution
 // component (the DC code of its first scan; a sequential one two, with the end-of-block code):
-// at most 512 pixels a byte. Arithmetic coding has no such floor.
+// at most 512 pixels a byte. Arithmetic coding has no such floor; its rare files are held to the
+// generic bound, which only a nearly flat image of them could exceed.
 constexpr long long kHuffmanPixelsPerByte = 64 * 8;
 
 // libjpeg's error manager, extended by the first warning it gave. Standard layout with the
