@@ -63,6 +63,10 @@ void RenderOptions::addTo(CLI::App& command) {
                 return gib > 0.0 && gib <= 16777216.0 ? std::string() : "must be a positive number of GiB";
             },
             "GIB"));
+    command.add_option("--max-triangles", maxTriangles,
+                       "Refuse a scene that stores more triangles than this after instancing (a shared "
+                       "mesh's once, each instance counted as 3), before reading its geometry")
+        ->capture_default_str();
 }
 
 std::vector<std::string> RenderOptions::arguments() const {
@@ -100,6 +104,7 @@ std::vector<std::string> RenderOptions::arguments() const {
     if (textureBudget != defaults.textureBudget) {
         args.insert(args.end(), {"--texture-budget", text(textureBudget)});
     }
+    if (maxTriangles != defaults.maxTriangles) args.insert(args.end(), {"--max-triangles", std::to_string(maxTriangles)});
     return args;
 }
 
@@ -171,7 +176,9 @@ Environment RenderOptions::environment() const {
 }
 
 SceneBudget RenderOptions::sceneBudget() const {
+    if (maxTriangles < 1) throw Error("--max-triangles: must be at least 1");
     SceneBudget budget;
+    budget.triangles = maxTriangles;
     budget.textureBytes = static_cast<uint64_t>(std::llround(std::ldexp(textureBudget, 30)));
     return budget;
 }

@@ -34,6 +34,7 @@ struct RenderOptions {
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
     double textureBudget = 4.0;   // --texture-budget, GiB of decoded texels (texture_budget.h)
+    uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
     void addTo(CLI::App& command);
@@ -48,7 +49,8 @@ struct RenderOptions {
     // The environment the options give (lights/environment.h), its map read and checked; throws
     // strata::Error naming the option or the file.
     Environment environment() const;
-    // What the scene may take: --texture-budget in bytes.
+    // What the scene may take: --max-triangles, and --texture-budget in bytes; throws
+    // strata::Error naming a bad value.
     SceneBudget sceneBudget() const;
     // Builds the scene from its files; `environment` (environment(), read once by the caller),
     // unless Default, overrides the scene description's.

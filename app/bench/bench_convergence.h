@@ -28,9 +28,9 @@ struct ConvergenceSettings {
     uint64_t seed = 0;
     int threads = 0;
     std::filesystem::path outDir;
-    // Also run strata24 with each of the renderer's skips (README, "Skip what a scene does not
-    // need") switched the other way: Russian roulette off, adaptive sampling on. skipsSummary
-    // compares each with the plain strata24 run (the programs' defaults).
+    // Also run strata24 with each of the renderer's skips (docs/design.md, "Skip what a scene
+    // does not need") switched the other way: Russian roulette off, adaptive sampling on.
+    // skipsSummary compares each with the plain strata24 run (the programs' defaults).
     bool skips = false;
 };
 

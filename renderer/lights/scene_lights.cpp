@@ -1,8 +1,5 @@
 #include "lights/scene_lights.h"
 
-#include <limits>
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
 #include "lights/area_light.h"
 #include "lights/directional_light.h"
@@ -16,19 +13,6 @@ double meanPower(const Light& light) {
     return (static_cast<double>(p.x) + p.y + p.z) / 3.0;
 }
 
-bool isBlack(const glm::vec3& v) { return !(v.x > 0.0f || v.y > 0.0f || v.z > 0.0f); }
-
-// The radius of the sphere about the centre of the vertices' bounding box that holds them all.
-float boundingSphereRadius(const std::vector<glm::vec3>& positions) {
-    glm::vec3 lower(std::numeric_limits<float>::infinity());
-    glm::vec3 upper = -lower;
-    for (const glm::vec3& p : positions) {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
-    return positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
-}
-
 std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<double> powers;
     powers.reserve(lights.size());
@@ -38,27 +22,24 @@ std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) 
 
 }  // namespace
 
-SceneLights::SceneLights(const MeshData& mesh)
-    : triangleLight_(mesh.triangles.size(), -1), sampler_({}) {
-    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-        const Material& material = mesh.materials[mesh.triangleMaterials[i]];
-        if (isBlack(material.emission)) continue;
-        const auto& t = mesh.triangles[i];
-        const glm::vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+SceneLights::SceneLights(const LightDescriptions& descriptions)
+    : sceneRadius_(descriptions.sceneRadius), triangleLight_(descriptions.triangles, -1), sampler_({}) {
+    for (const EmittingTriangle& emitter : descriptions.emitters) {
+        const Material& material = *emitter.material;
+        const auto& [p0, p1, p2] = emitter.corners;
         auto light = material.textures.emission || material.textures.coverage
-                         ? std::make_unique<AreaLight>(p0, p1, p2, material, cornerUvs(mesh, i))
+                         ? std::make_unique<AreaLight>(p0, p1, p2, material, emitter.uvs)
                          : std::make_unique<AreaLight>(p0, p1, p2, material.emission);
         if (!(light->area() > 0.0f)) continue;
-        triangleLight_[i] = static_cast<int32_t>(add(std::move(light)));
+        triangleLight_[emitter.triangle] = static_cast<int32_t>(add(std::move(light)));
     }
-    for (const PointLight& light : mesh.pointLights) add(std::make_unique<PointLight>(light));
+    for (const PointLight& light : descriptions.pointLights) add(std::make_unique<PointLight>(light));
     // Lights at infinity weigh their power by the area of the scene they can reach.
-    sceneRadius_ = boundingSphereRadius(mesh.positions);
-    for (const DirectionalLight& light : mesh.directionalLights) {
+    for (const DirectionalLight& light : descriptions.directionalLights) {
         add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius_));
     }
     sceneOwnLights_ = lights_.size();
-    setEnvironment(mesh.environment);
+    setEnvironment(descriptions.environment);
 }
 
 void SceneLights::setEnvironment(const Environment& given) {

@@ -7,23 +7,58 @@
 //
 // The environment comes last so that it can be replaced alone: relighting a scene rebuilds the
 // environment's light and the power-based choice, never the lights of its triangles.
+//
+// The lights know no scene: the scene (scene/scene.h) hands them a list of light descriptions,
+// its emitting triangles in world space among them.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
+#include "lights/directional_light.h"
+#include "lights/environment.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
-#include "scene/mesh.h"
+#include "lights/point_light.h"
+#include "materials/material.h"
 
 namespace strata {
 
+// Whether a surface of this material emits (Ke > 0 in some channel): its triangles are lights.
+inline bool emitsLight(const Material& material) {
+    const glm::vec3& ke = material.emission;
+    return ke.x > 0.0f || ke.y > 0.0f || ke.z > 0.0f;
+}
+
+// An emitting triangle as the scene hands it over: where it is in world space, counter-clockwise
+// seen from the side it emits from, and what it emits.
+struct EmittingTriangle {
+    uint32_t triangle;  // the scene's index of it, by which a ray's hit finds its light
+    std::array<glm::vec3, 3> corners;
+    const Material* material;         // emitsLight(); outlives the lights
+    std::array<glm::vec2, 3> uvs{};   // the corners' texture coordinates, where `material` reads
+};
+
+// Everything a scene is lit by, as it hands it to SceneLights.
+struct LightDescriptions {
+    size_t triangles = 0;  // how many triangles the scene has: the range of lightOnTriangle
+    std::vector<EmittingTriangle> emitters;
+    std::vector<PointLight> pointLights;
+    std::vector<DirectionalLight> directionalLights;
+    Environment environment;
+    // Of a sphere that holds the scene, by which lights at infinity weigh their power.
+    float sceneRadius = 0.0f;
+};
+
 class SceneLights {
 public:
-    // The emitting triangles (Ke > 0 and positive area) as area lights, then the point lights,
-    // then the directional lights, then the environment (after the default rule).
-    explicit SceneLights(const MeshData& mesh);
+    // The emitting triangles (those of positive area) as area lights, in the order given, then
+    // the point lights, then the directional lights, then the environment (after the default rule).
+    explicit SceneLights(const LightDescriptions& descriptions);
 
-    // Replaces the environment (mesh.environment at construction) and the choice among the
+    // Replaces the environment (the descriptions' at construction) and the choice among the
     // lights; the other lights and their indices stay.
     void setEnvironment(const Environment& given);
     // The environment in use, after the default rule (Default becomes None or Uniform).

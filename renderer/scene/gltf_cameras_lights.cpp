@@ -42,14 +42,9 @@ void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::op
 
 // The camera's look-at point straight ahead at the distance of the scene's centre, so that a
 // viewer orbiting it turns about the scene (the direction stays the file's).
-void aimGltfCameraAtScene(CameraPose& pose, const std::vector<glm::vec3>& positions) {
-    if (positions.empty()) return;
-    glm::vec3 lower(std::numeric_limits<float>::infinity());
-    glm::vec3 upper = -lower;
-    for (const glm::vec3& p : positions) {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
+void aimGltfCameraAtScene(CameraPose& pose, const MeshData& mesh) {
+    if (mesh.positions.empty()) return;
+    const auto [lower, upper] = worldBounds(mesh);
     const float distance = glm::length(0.5f * (lower + upper) - pose.position);
     if (distance > 0.0f && std::isfinite(distance)) {
         pose.lookAt = pose.position + distance * glm::normalize(pose.lookAt - pose.position);

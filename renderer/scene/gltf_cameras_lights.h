@@ -16,7 +16,7 @@ namespace strata {
 void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::optional<CameraPose>& camera);
 
 // Moves the look-at point straight ahead to the distance of the scene's centre.
-void aimGltfCameraAtScene(CameraPose& pose, const std::vector<glm::vec3>& positions);
+void aimGltfCameraAtScene(CameraPose& pose, const MeshData& mesh);
 
 // The KHR_lights_punctual light `index` at `world`, appended to the mesh's lights.
 void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData& mesh);

@@ -168,7 +168,7 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const 
     std::vector<std::string> textureWarnings;
     SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes));
     size_t dropped = 0;
-    ParsedScene parsed = flattenGltfScene(gltf, textures, dropped);
+    ParsedScene parsed = buildGltfScene(gltf, textures, budget, dropped);
     if (report) {
         report->faces = parsed.mesh.triangles.size();
         report->droppedTriangles = dropped;

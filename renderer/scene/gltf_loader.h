@@ -1,6 +1,7 @@
 #pragma once
 // The glTF 2.0 format (.gltf with its buffers and images, .glb) through tinygltf. The default
-// scene's node hierarchy is flattened into one mesh in world space (metres, gltf_nodes.h):
+// scene's node hierarchy becomes one mesh in world space (metres, gltf_nodes.h), a primitive
+// that several nodes use stored once and placed at each:
 // triangle primitives with their normals and UVs, the metallic-roughness materials and their
 // textures (gltf_materials.h), the first perspective camera and the KHR_lights_punctual lights
 // (gltf_cameras_lights.h). tinygltf checks the JSON; the accessors, indices and node references
@@ -24,9 +25,8 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path);
 
 // The format's parsing: the bundle's first file as the glTF (JSON or binary), its URIs resolved
 // among the bundle's files and never on the file system. Throws strata::Error naming the file
-// and the mesh, node, accessor, material or extension that Strata cannot render, or the texture
-// that would take the scene's textures over `budget`.
-ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report = nullptr,
-                           const SceneBudget& budget = {});
+// and the mesh, node, accessor, material or extension that Strata cannot render, or the budget
+// its triangles exceed, or the texture that would take the scene's textures over `budget`.
+ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report = nullptr, const SceneBudget& budget = {});
 
 }  // namespace strata

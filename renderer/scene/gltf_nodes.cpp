@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <set>
 #include <optional>
 #include <utility>
 #include <glm/geometric.hpp>
@@ -13,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include "lights/scene_lights.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_cameras_lights.h"
 #include "scene/gltf_materials.h"
@@ -75,21 +78,45 @@ glm::dmat4 localTransform(const GltfModel& gltf, const tinygltf::Node& node, int
     return transform;
 }
 
-// The scene's nodes visited once each, their meshes' primitives appended in world space, their
-// camera and lights taken.
+// What makes two of a file's primitives the same geometry: their POSITION, NORMAL and TEXCOORD_0
+// accessors, their indices (-1 for none), mode and material.
+using PrimitiveKey = std::array<int, 6>;
+
+PrimitiveKey keyOf(const tinygltf::Primitive& primitive) {
+    const auto attribute = [&](const char* name) {
+        const auto it = primitive.attributes.find(name);
+        return it == primitive.attributes.end() ? -1 : it->second;
+    };
+    return {attribute("POSITION"), attribute("NORMAL"), attribute("TEXCOORD_0"), primitive.indices, primitive.mode,
+            primitive.material};
+}
+
+// A node with a mesh, at its world transform: a use of each of the mesh's primitives. Kept per
+// node, not per use, so that a small file of many primitives on many nodes costs no more memory
+// here than its nodes do in tinygltf before the budget has been checked.
+struct MeshNode {
+    int mesh;
+    glm::dmat4 world;
+};
+
+// The scene's nodes visited once each, their camera and lights taken, their meshes' primitives
+// appended: in world space where a primitive is used once, else once in its own coordinates as a
+// shared mesh (mesh.h) placed at each node that uses it.
 class SceneBuilder {
 public:
-    SceneBuilder(GltfModel& gltf, SceneTextures& textures) : gltf_(gltf), textures_(textures) {}
+    SceneBuilder(GltfModel& gltf, SceneTextures& textures, const SceneBudget& budget)
+        : gltf_(gltf), textures_(textures), budget_(budget) {}
 
     ParsedScene build() {
         for (size_t i = 0; i < gltf_.model.materials.size(); ++i) {
             parsed_.mesh.materials.push_back(gltfMaterial(gltf_, textures_, i));
         }
         visitNodes();
+        addPrimitives();
         // A flat scene keeps no per-triangle normal indices, one without UVs none (mesh.h).
         if (parsed_.mesh.normals.empty()) parsed_.mesh.triangleNormals.clear();
         if (parsed_.mesh.uvs.empty()) parsed_.mesh.triangleUvs.clear();
-        if (parsed_.camera) aimGltfCameraAtScene(*parsed_.camera, parsed_.mesh.positions);
+        if (parsed_.camera) aimGltfCameraAtScene(*parsed_.camera, parsed_.mesh);
         return std::move(parsed_);
     }
 
@@ -121,7 +148,10 @@ private:
             visited[static_cast<size_t>(index)] = true;
             const glm::dmat4 world = parent * localTransform(gltf_, node, index);
             if (!isFinite(world)) fail("node " + std::to_string(index) + " has a non-finite transform");
-            if (node.mesh >= 0) addMesh(node.mesh, world);
+            if (node.mesh >= 0) {
+                element(gltf_.model.meshes, node.mesh, "mesh");
+                meshNodes_.push_back({node.mesh, world});
+            }
             if (node.camera >= 0) takeGltfCamera(gltf_, node.camera, world, parsed_.camera);
             if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
                 const tinygltf::Value& light = it->second.Get("light");
@@ -164,101 +194,196 @@ private:
         }
     }
 
-    void addMesh(int meshIndex, const glm::dmat4& world) {
-        const tinygltf::Mesh& gltfMesh = element(gltf_.model.meshes, meshIndex, "mesh");
+    // The triangles a primitive will have, by its accessors' counts, before any is read; 0 where
+    // reading it will fail (and say why).
+    uint64_t triangleCount(const tinygltf::Primitive& primitive) const {
+        const auto& accessors = gltf_.model.accessors;
+        const auto position = primitive.attributes.find("POSITION");
+        const int counted = primitive.indices >= 0 ? primitive.indices
+                                                   : (position == primitive.attributes.end() ? -1 : position->second);
+        if (counted < 0 || static_cast<size_t>(counted) >= accessors.size()) return 0;
+        const uint64_t n = accessors[static_cast<size_t>(counted)].count;
+        switch (primitive.mode) {
+            case TINYGLTF_MODE_TRIANGLES: return n / 3;
+            case TINYGLTF_MODE_TRIANGLE_STRIP:
+            case TINYGLTF_MODE_TRIANGLE_FAN: return n < 3 ? 0 : n - 2;
+            default: return 0;
+        }
+    }
+
+    bool emits(const tinygltf::Primitive& primitive) const {
+        const int m = primitive.material;
+        return m >= 0 && static_cast<size_t>(m) < parsed_.mesh.materials.size() &&
+               emitsLight(parsed_.mesh.materials[static_cast<size_t>(m)]);
+    }
+
+    // Every primitive use, in the order of the nodes: a primitive used once in world space, as
+    // before instancing, so that a flat file loads as it always has; one used more often once in
+    // its own coordinates, where first used, with a placement for each use (the emitting ones
+    // are placed into the world by the scene, each use's a copy: scene.h). The budget is checked
+    // first, from the accessors' counts, before any geometry is read.
+    void addPrimitives() {
+        // f(mesh, primitive index, world) for every use, in order.
+        const auto forEachUse = [&](auto f) {
+            for (const MeshNode& node : meshNodes_) {
+                const tinygltf::Mesh& mesh = gltf_.model.meshes[static_cast<size_t>(node.mesh)];
+                for (size_t p = 0; p < mesh.primitives.size(); ++p) f(node.mesh, p, node.world);
+            }
+        };
+        const auto primitiveOf = [&](int mesh, size_t p) -> const tinygltf::Primitive& {
+            return gltf_.model.meshes[static_cast<size_t>(mesh)].primitives[p];
+        };
+        std::map<PrimitiveKey, size_t> uses;
+        forEachUse([&](int mesh, size_t p, const glm::dmat4&) { ++uses[keyOf(primitiveOf(mesh, p))]; });
+        TriangleCount count;
+        std::set<PrimitiveKey> counted;
+        forEachUse([&](int mesh, size_t p, const glm::dmat4&) {
+            const tinygltf::Primitive& primitive = primitiveOf(mesh, p);
+            const PrimitiveKey key = keyOf(primitive);
+            const uint64_t triangles = triangleCount(primitive);
+            // An emitting primitive is placed into the world at each use, as a copy (scene.h).
+            const bool instanced = uses[key] > 1 && !emits(primitive);
+            count.placed += triangles;
+            if (instanced) ++count.placements;
+            if (!instanced || counted.insert(key).second) count.stored += triangles;
+        });
+        checkTriangleBudget(gltf_.path, count, budget_);
+
+        // Each shared primitive's index in the mesh's shared meshes (SIZE_MAX: it has no triangles)
+        // and how many of its triangles are degenerate.
+        struct Shared {
+            size_t index = SIZE_MAX;
+            size_t degenerate = 0;
+        };
+        std::map<PrimitiveKey, Shared> sharedMeshes;
+        MeshData& meshData = parsed_.mesh;
+        forEachUse([&](int mesh, size_t p, const glm::dmat4& world) {
+            const PrimitiveKey key = keyOf(primitiveOf(mesh, p));
+            if (uses[key] == 1) {
+                addPrimitive(mesh, p, world);
+                return;
+            }
+            const auto [it, first] = sharedMeshes.try_emplace(key);
+            Shared& shared = it->second;
+            if (first) {
+                const auto firstTriangle = static_cast<uint32_t>(meshData.triangles.size());
+                const size_t droppedBefore = dropped_;
+                addPrimitive(mesh, p, glm::dmat4(1.0));
+                shared.degenerate = dropped_ - droppedBefore;
+                const auto triangles = static_cast<uint32_t>(meshData.triangles.size() - firstTriangle);
+                if (triangles > 0) {
+                    shared.index = meshData.sharedMeshes.size();
+                    meshData.sharedMeshes.push_back({firstTriangle, triangles, {}});
+                }
+            } else {
+                dropped_ += shared.degenerate;  // each use leaves out what flattening it would
+            }
+            if (shared.index == SIZE_MAX) return;
+            SharedMesh& sharedMesh = meshData.sharedMeshes[shared.index];
+            // A placement that flattens the primitive makes every triangle degenerate.
+            const glm::mat4 placement(world);
+            if (!std::isnormal(glm::determinant(glm::mat3(placement)))) {
+                dropped_ += sharedMesh.triangleCount;
+                return;
+            }
+            sharedMesh.placements.push_back(placement);
+        });
+    }
+
+    // The primitive's triangles appended, at `world`.
+    void addPrimitive(int meshIndex, size_t p, const glm::dmat4& world) {
+        const tinygltf::Mesh& gltfMesh = gltf_.model.meshes[static_cast<size_t>(meshIndex)];
         // glTF 2.0, "Transformations" and "Meshes": normals go by the inverse transpose, and a
         // negative determinant turns counter-clockwise into clockwise.
         const glm::dmat3 linear(world);
         const glm::dmat3 normalTransform = glm::transpose(glm::inverse(linear));
         const bool mirrored = glm::determinant(linear) < 0.0;
         MeshData& mesh = parsed_.mesh;
-        for (size_t p = 0; p < gltfMesh.primitives.size(); ++p) {
-            const tinygltf::Primitive& primitive = gltfMesh.primitives[p];
-            const std::string where = "mesh '" + gltfMesh.name + "' (" + std::to_string(meshIndex) +
-                                      ") primitive " + std::to_string(p);
-            const auto position = primitive.attributes.find("POSITION");
-            if (position == primitive.attributes.end()) {
-                // glTF 2.0, "Meshes": a primitive without positions should not be rendered.
-                warnOnce("primitives without POSITION are skipped");
+        const tinygltf::Primitive& primitive = gltfMesh.primitives[p];
+        const std::string where = "mesh '" + gltfMesh.name + "' (" + std::to_string(meshIndex) +
+                                  ") primitive " + std::to_string(p);
+        const auto position = primitive.attributes.find("POSITION");
+        if (position == primitive.attributes.end()) {
+            // glTF 2.0, "Meshes": a primitive without positions should not be rendered.
+            warnOnce("primitives without POSITION are skipped");
+            return;
+        }
+        const std::vector<double> positions = accessorValues(gltf_, position->second, AccessorUse::Position, where);
+        const size_t vertexCount = positions.size() / 3;
+        std::vector<double> normals;
+        if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
+            normals = accessorValues(gltf_, normal->second, AccessorUse::Normal, where);
+            if (normals.size() != positions.size()) {
+                fail(where + ": NORMAL has " + std::to_string(normals.size() / 3) + " elements, POSITION " +
+                     std::to_string(vertexCount));
+            }
+        }
+        // TEXCOORD_0 with v turned up (texture.h's convention; glTF's v runs down).
+        std::vector<double> texCoords;
+        if (const auto uv = primitive.attributes.find("TEXCOORD_0"); uv != primitive.attributes.end()) {
+            texCoords = accessorValues(gltf_, uv->second, AccessorUse::TexCoord, where);
+            if (texCoords.size() / 2 != vertexCount) {
+                fail(where + ": TEXCOORD_0 has " + std::to_string(texCoords.size() / 2) + " elements, POSITION " +
+                     std::to_string(vertexCount));
+            }
+        }
+        std::vector<uint32_t> vertices;
+        if (primitive.indices >= 0) {
+            for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
+                if (index >= static_cast<double>(vertexCount)) {
+                    fail(where + ": index " + std::to_string(static_cast<uint64_t>(index)) +
+                         " out of range (" + std::to_string(vertexCount) + " vertices)");
+                }
+                vertices.push_back(static_cast<uint32_t>(index));
+            }
+        } else {
+            for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
+        }
+        const std::vector<uint32_t> corners = triangleCorners(primitive.mode, vertices, where);
+        const uint32_t material = materialOf(primitive.material);
+
+        const auto firstVertex = static_cast<uint32_t>(mesh.positions.size());
+        if (mesh.positions.size() + vertexCount > std::numeric_limits<uint32_t>::max()) {
+            fail("more than 2^32 vertices");
+        }
+        for (size_t v = 0; v < vertexCount; ++v) {
+            const glm::dvec4 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1.0);
+            mesh.positions.emplace_back(glm::dvec3(world * p));
+        }
+        const auto firstNormal = static_cast<uint32_t>(mesh.normals.size());
+        for (size_t v = 0; v < normals.size() / 3; ++v) {
+            const glm::dvec3 n = normalTransform * glm::dvec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+            // A zero normal marks its triangles flat below.
+            mesh.normals.emplace_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
+        }
+        const auto firstUv = static_cast<uint32_t>(mesh.uvs.size());
+        for (size_t v = 0; v < texCoords.size() / 2; ++v) {
+            mesh.uvs.emplace_back(static_cast<float>(texCoords[2 * v]), static_cast<float>(1.0 - texCoords[2 * v + 1]));
+        }
+        for (size_t c = 0; c < corners.size(); c += 3) {
+            std::array<uint32_t, 3> corner{corners[c], corners[c + 1], corners[c + 2]};
+            if (mirrored) std::swap(corner[1], corner[2]);
+            const std::array<uint32_t, 3> triangle{firstVertex + corner[0], firstVertex + corner[1],
+                                                   firstVertex + corner[2]};
+            const glm::vec3& a = mesh.positions[triangle[0]];
+            const glm::vec3 n = glm::cross(mesh.positions[triangle[1]] - a, mesh.positions[triangle[2]] - a);
+            if (!isFinite(glm::dvec3(n)) || !(glm::dot(n, n) > 0.0f)) {
+                ++dropped_;
                 continue;
             }
-            const std::vector<double> positions = accessorValues(gltf_, position->second, AccessorUse::Position, where);
-            const size_t vertexCount = positions.size() / 3;
-            std::vector<double> normals;
-            if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
-                normals = accessorValues(gltf_, normal->second, AccessorUse::Normal, where);
-                if (normals.size() != positions.size()) {
-                    fail(where + ": NORMAL has " + std::to_string(normals.size() / 3) + " elements, POSITION " +
-                         std::to_string(vertexCount));
-                }
-            }
-            // TEXCOORD_0 with v turned up (texture.h's convention; glTF's v runs down).
-            std::vector<double> texCoords;
-            if (const auto uv = primitive.attributes.find("TEXCOORD_0"); uv != primitive.attributes.end()) {
-                texCoords = accessorValues(gltf_, uv->second, AccessorUse::TexCoord, where);
-                if (texCoords.size() / 2 != vertexCount) {
-                    fail(where + ": TEXCOORD_0 has " + std::to_string(texCoords.size() / 2) + " elements, POSITION " +
-                         std::to_string(vertexCount));
-                }
-            }
-            std::vector<uint32_t> vertices;
-            if (primitive.indices >= 0) {
-                for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
-                    if (index >= static_cast<double>(vertexCount)) {
-                        fail(where + ": index " + std::to_string(static_cast<uint64_t>(index)) +
-                             " out of range (" + std::to_string(vertexCount) + " vertices)");
-                    }
-                    vertices.push_back(static_cast<uint32_t>(index));
-                }
-            } else {
-                for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
-            }
-            const std::vector<uint32_t> corners = triangleCorners(primitive.mode, vertices, where);
-            const uint32_t material = materialOf(primitive.material);
-
-            const auto firstVertex = static_cast<uint32_t>(mesh.positions.size());
-            if (mesh.positions.size() + vertexCount > std::numeric_limits<uint32_t>::max()) {
-                fail("more than 2^32 vertices");
-            }
-            for (size_t v = 0; v < vertexCount; ++v) {
-                const glm::dvec4 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1.0);
-                mesh.positions.emplace_back(glm::dvec3(world * p));
-            }
-            const auto firstNormal = static_cast<uint32_t>(mesh.normals.size());
-            for (size_t v = 0; v < normals.size() / 3; ++v) {
-                const glm::dvec3 n = normalTransform * glm::dvec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
-                // A zero normal marks its triangles flat below.
-                mesh.normals.emplace_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
-            }
-            const auto firstUv = static_cast<uint32_t>(mesh.uvs.size());
-            for (size_t v = 0; v < texCoords.size() / 2; ++v) {
-                mesh.uvs.emplace_back(static_cast<float>(texCoords[2 * v]), static_cast<float>(1.0 - texCoords[2 * v + 1]));
-            }
-            for (size_t c = 0; c < corners.size(); c += 3) {
-                std::array<uint32_t, 3> corner{corners[c], corners[c + 1], corners[c + 2]};
-                if (mirrored) std::swap(corner[1], corner[2]);
-                const std::array<uint32_t, 3> triangle{firstVertex + corner[0], firstVertex + corner[1],
-                                                       firstVertex + corner[2]};
-                const glm::vec3& a = mesh.positions[triangle[0]];
-                const glm::vec3 n = glm::cross(mesh.positions[triangle[1]] - a, mesh.positions[triangle[2]] - a);
-                if (!isFinite(glm::dvec3(n)) || !(glm::dot(n, n) > 0.0f)) {
-                    ++dropped_;
-                    continue;
-                }
-                mesh.triangles.push_back(triangle);
-                mesh.triangleMaterials.push_back(material);
-                // glTF 2.0, "Meshes": without normals a triangle is flat.
-                const std::array<uint32_t, 3> triangleNormals{firstNormal + corner[0], firstNormal + corner[1],
-                                                              firstNormal + corner[2]};
-                const bool shaded = !normals.empty() &&
-                                    std::none_of(triangleNormals.begin(), triangleNormals.end(), [&](uint32_t i) {
-                                        return mesh.normals[i] == glm::vec3(0.0f);
-                                    });
-                mesh.triangleNormals.push_back(shaded ? triangleNormals : kNoNormals);
-                mesh.triangleUvs.push_back(texCoords.empty() ? kNoUvs
-                                                             : std::array<uint32_t, 3>{firstUv + corner[0], firstUv + corner[1],
-                                                                                       firstUv + corner[2]});
-            }
+            mesh.triangles.push_back(triangle);
+            mesh.triangleMaterials.push_back(material);
+            // glTF 2.0, "Meshes": without normals a triangle is flat.
+            const std::array<uint32_t, 3> triangleNormals{firstNormal + corner[0], firstNormal + corner[1],
+                                                          firstNormal + corner[2]};
+            const bool shaded = !normals.empty() &&
+                                std::none_of(triangleNormals.begin(), triangleNormals.end(), [&](uint32_t i) {
+                                    return mesh.normals[i] == glm::vec3(0.0f);
+                                });
+            mesh.triangleNormals.push_back(shaded ? triangleNormals : kNoNormals);
+            mesh.triangleUvs.push_back(texCoords.empty() ? kNoUvs
+                                                         : std::array<uint32_t, 3>{firstUv + corner[0], firstUv + corner[1],
+                                                                                   firstUv + corner[2]});
         }
     }
 
@@ -278,6 +403,8 @@ private:
 
     GltfModel& gltf_;
     SceneTextures& textures_;
+    const SceneBudget& budget_;
+    std::vector<MeshNode> meshNodes_;
     ParsedScene parsed_;
     std::optional<uint32_t> defaultMaterial_;
     size_t dropped_ = 0;
@@ -285,8 +412,8 @@ private:
 
 }  // namespace
 
-ParsedScene flattenGltfScene(GltfModel& gltf, SceneTextures& textures, size_t& dropped) {
-    SceneBuilder builder(gltf, textures);
+ParsedScene buildGltfScene(GltfModel& gltf, SceneTextures& textures, const SceneBudget& budget, size_t& dropped) {
+    SceneBuilder builder(gltf, textures, budget);
     ParsedScene parsed = builder.build();
     dropped = builder.dropped();
     return parsed;

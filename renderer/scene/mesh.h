@@ -2,10 +2,17 @@
 // A scene as loaders give it: geometry, materials and the lights that are not emitting triangles
 // (what a scene format's loader produces, scene_format.h, and what tests build by hand), and what
 // rays leaving it see.
+//
+// Geometry that a scene places more than once (glTF nodes sharing a primitive) is stored once, as
+// a shared mesh: a range of the triangles in coordinates of its own, placed in the world by each
+// of its placements (Embree instances, scene.h). Every other triangle is in world coordinates,
+// every triangle of a flat scene (an OBJ, a glTF file whose primitives are each used once).
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -18,6 +25,16 @@ namespace strata {
 
 inline constexpr std::array<uint32_t, 3> kNoNormals{UINT32_MAX, UINT32_MAX, UINT32_MAX};
 inline constexpr std::array<uint32_t, 3> kNoUvs = kNoNormals;
+
+// Triangles [firstTriangle, firstTriangle + triangleCount) of a mesh, in their own coordinates,
+// drawn at each placement: an affine object-to-world transform (the last row 0 0 0 1) of nonzero
+// determinant. Normals go by the inverse transpose; a mirroring placement (negative determinant)
+// keeps the front side where it is, so the world front is where the transformed normals point.
+struct SharedMesh {
+    uint32_t firstTriangle = 0;
+    uint32_t triangleCount = 0;
+    std::vector<glm::mat4> placements;
+};
 
 struct MeshData {
     std::vector<glm::vec3> positions;
@@ -35,6 +52,8 @@ struct MeshData {
     std::vector<glm::vec2> uvs;
     std::vector<std::array<uint32_t, 3>> triangleUvs;
     std::vector<Material> materials;
+    // Disjoint ranges of the triangles, in increasing order, each with vertices of its own.
+    std::vector<SharedMesh> sharedMeshes;
     std::vector<PointLight> pointLights;
     std::vector<DirectionalLight> directionalLights;
     Environment environment;
@@ -46,5 +65,15 @@ inline std::array<glm::vec2, 3> cornerUvs(const MeshData& mesh, size_t triangle)
     const auto& c = mesh.triangleUvs[triangle];
     return {mesh.uvs[c[0]], mesh.uvs[c[1]], mesh.uvs[c[2]]};
 }
+
+// The world bounding box of the mesh, {lower, upper} corner by corner: of all its vertices for a
+// flat mesh; with shared meshes, of the vertices the world's triangles use (a shared mesh's other
+// vertices are in its own coordinates) and of each placement of each shared mesh's box (a box
+// about the placed vertices, tight under translation, scale and mirroring). {+inf, -inf} for no
+// vertices.
+std::pair<glm::vec3, glm::vec3> worldBounds(const MeshData& mesh);
+
+// The triangles of the mesh's world: those not shared, and each shared mesh's times its placements.
+uint64_t placedTriangles(const MeshData& mesh);
 
 }  // namespace strata

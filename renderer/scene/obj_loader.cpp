@@ -187,6 +187,7 @@ struct ObjScan {
     // "nan" as 0, so its own normals cannot tell.
     std::vector<glm::vec3> normals;
     size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
+    uint64_t triangles = 0;              // the faces' once triangulated (as fans)
     std::vector<std::string> warnings;
 };
 
@@ -211,6 +212,7 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
             ++textureCoordinates;
         } else if (key == "f") {
             if (words.size() < 4) failAt(name, line, "a face needs at least 3 vertices");
+            scan.triangles += words.size() - 3;
             for (size_t i = 1; i < words.size(); ++i) {
                 const auto corner = faceCorner(words[i]);
                 if (!corner) failAt(name, line, "'" + std::string(words[i]) + "' is not a face vertex");
@@ -609,6 +611,7 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report, const Scen
     const SceneFile& obj = bundle.files.front();
     const std::string objName = bundle.pathOf(obj.name);
     const ObjScan scan = validateObj(obj.bytes, objName);
+    checkTriangleBudget(objName, {scan.triangles, 0, scan.triangles}, budget);
     std::vector<std::string> warnings = scan.warnings;
     // Each MTL file is checked on its own, so that a bad line is reported with its file and line;
     // tinyobjloader then reads them joined, as the OBJ's mtllib lines load them one after another.

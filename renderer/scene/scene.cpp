@@ -9,6 +9,8 @@
 #include <utility>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "materials/normal_map.h"
 #include "util/error.h"
@@ -55,6 +57,41 @@ RTCDevice embreeDevice() {
 }
 
 namespace {
+// Ranges in order and apart, vertices of their own, placements affine and invertible (mesh.h).
+void validateSharedMeshes(const MeshData& mesh) {
+    const auto& shared = mesh.sharedMeshes;
+    if (shared.empty()) return;
+    size_t next = 0;
+    for (const SharedMesh& s : shared) {
+        if (s.firstTriangle < next || s.triangleCount == 0 || s.triangleCount > mesh.triangles.size() - s.firstTriangle) {
+            throw Error("the shared meshes need disjoint, increasing, non-empty ranges of the triangles");
+        }
+        next = s.firstTriangle + size_t{s.triangleCount};
+        for (const glm::mat4& placement : s.placements) {
+            const bool affine = placement[0][3] == 0.0f && placement[1][3] == 0.0f && placement[2][3] == 0.0f &&
+                                placement[3][3] == 1.0f;
+            const glm::vec3 translation(placement[3]);
+            const bool finite = !glm::any(glm::isnan(translation)) && !glm::any(glm::isinf(translation));
+            // A non-finite linear part has no normal determinant either.
+            if (!affine || !finite || !std::isnormal(glm::determinant(glm::mat3(placement)))) {
+                throw Error("a shared mesh's placement is not a finite, invertible affine transform");
+            }
+        }
+    }
+    // The part each vertex belongs to: 0 the world, k + 1 shared mesh k.
+    constexpr uint32_t kUnused = UINT32_MAX;
+    std::vector<uint32_t> part(mesh.positions.size(), kUnused);
+    size_t k = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        while (k < shared.size() && t >= shared[k].firstTriangle + size_t{shared[k].triangleCount}) ++k;
+        const uint32_t trianglePart = k < shared.size() && t >= shared[k].firstTriangle ? static_cast<uint32_t>(k + 1) : 0;
+        for (uint32_t v : mesh.triangles[t]) {
+            if (part[v] == kUnused) part[v] = trianglePart;
+            if (part[v] != trianglePart) throw Error("a vertex is used by two parts of the scene (mesh.h's shared meshes)");
+        }
+    }
+}
+
 // The checks the material table and the lights rely on, made before either is built.
 const MeshData& validated(const MeshData& mesh) {
     if (mesh.triangles.empty()) throw Error("the scene has no triangles");
@@ -85,6 +122,7 @@ const MeshData& validated(const MeshData& mesh) {
             }
         }
     }
+    validateSharedMeshes(mesh);
     return mesh;
 }
 
@@ -112,22 +150,115 @@ bool isCutout(const MeshData& mesh, size_t triangle) {
     return mesh.materials[mesh.triangleMaterials[triangle]].textures.coverage != nullptr;
 }
 
-// Moves the triangles of cut-out materials after all others (stably), so that each kind is one
-// contiguous range of the index buffer, an Embree geometry of its own.
-MeshData& cutoutsLast(MeshData& mesh) {
-    std::vector<uint32_t> order(mesh.triangles.size());
-    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_partition(order.begin(), order.end(), [&](uint32_t i) { return !isCutout(mesh, i); });
-    const auto permuted = [&](auto& list) {
+// The per-triangle lists of the mesh reordered: entry i becomes the old entry order[i].
+void reorderTriangles(MeshData& mesh, const std::vector<uint32_t>& order) {
+    const auto reordered = [&](auto& list) {
         if (list.empty()) return;
-        auto copy = list;
+        auto copy = std::move(list);
+        list.resize(order.size());
         for (size_t i = 0; i < order.size(); ++i) list[i] = copy[order[i]];
     };
-    permuted(mesh.triangles);
-    permuted(mesh.triangleMaterials);
-    permuted(mesh.triangleNormals);
-    permuted(mesh.triangleUvs);
+    reordered(mesh.triangles);
+    reordered(mesh.triangleMaterials);
+    reordered(mesh.triangleNormals);
+    reordered(mesh.triangleUvs);
+}
+
+// Appends triangle `t` of a shared mesh placed by `placement` as a world triangle of its own
+// (its own vertices and normals; mirrored, its corners 1 and 2 swapped to keep its front).
+void appendPlacedCopy(MeshData& mesh, uint32_t t, const glm::mat4& placement) {
+    const glm::mat3 normalToWorld = glm::transpose(glm::inverse(glm::mat3(placement)));
+    std::array<uint32_t, 3> corners{0, 1, 2};
+    if (glm::determinant(glm::mat3(placement)) < 0.0f) std::swap(corners[1], corners[2]);
+    const auto firstVertex = static_cast<uint32_t>(mesh.positions.size());
+    for (uint32_t c : corners) mesh.positions.emplace_back(placement * glm::vec4(mesh.positions[mesh.triangles[t][c]], 1.0f));
+    mesh.triangles.push_back({firstVertex, firstVertex + 1, firstVertex + 2});
+    mesh.triangleMaterials.push_back(mesh.triangleMaterials[t]);
+    if (!mesh.triangleNormals.empty()) {
+        const std::array<uint32_t, 3> normals = mesh.triangleNormals[t];
+        if (normals == kNoNormals) {
+            mesh.triangleNormals.push_back(kNoNormals);
+        } else {
+            const auto firstNormal = static_cast<uint32_t>(mesh.normals.size());
+            for (uint32_t c : corners) mesh.normals.push_back(glm::normalize(normalToWorld * mesh.normals[normals[c]]));
+            mesh.triangleNormals.push_back({firstNormal, firstNormal + 1, firstNormal + 2});
+        }
+    }
+    if (!mesh.triangleUvs.empty()) {
+        const std::array<uint32_t, 3> uvs = mesh.triangleUvs[t];
+        mesh.triangleUvs.push_back(uvs == kNoUvs ? kNoUvs : std::array<uint32_t, 3>{uvs[corners[0]], uvs[corners[1]], uvs[corners[2]]});
+    }
+}
+
+// Lays the triangles out as the scene traces them (Scene's constructor): each shared mesh's
+// emitting triangles placed into the world, the world's triangles first, then each shared mesh's,
+// the cut-outs of each after its other triangles (stably), so that each kind of each is one
+// contiguous range of the index buffer, an Embree geometry of its own.
+MeshData& laidOut(MeshData& mesh) {
+    const auto worldTriangles = static_cast<uint32_t>(mesh.triangles.size());
+    std::vector<bool> placedInWorld(worldTriangles, false);
+    for (const SharedMesh& shared : mesh.sharedMeshes) {
+        for (uint32_t t = shared.firstTriangle; t < shared.firstTriangle + shared.triangleCount; ++t) {
+            if (!emitsLight(mesh.materials[mesh.triangleMaterials[t]])) continue;
+            placedInWorld[t] = true;
+            for (const glm::mat4& placement : shared.placements) appendPlacedCopy(mesh, t, placement);
+        }
+    }
+    std::vector<uint32_t> order;
+    order.reserve(mesh.triangles.size());
+    // Appends triangles [first, end) that `keep` keeps, the cut-outs last.
+    const auto appendRange = [&](uint32_t first, uint32_t end, auto keep) {
+        const size_t start = order.size();
+        for (uint32_t t = first; t < end; ++t) {
+            if (keep(t)) order.push_back(t);
+        }
+        std::stable_partition(order.begin() + static_cast<std::ptrdiff_t>(start), order.end(),
+                              [&](uint32_t t) { return !isCutout(mesh, t); });
+    };
+    size_t k = 0;
+    const auto inWorld = [&](uint32_t t) {
+        if (t >= worldTriangles) return true;  // a placed copy
+        while (k < mesh.sharedMeshes.size() &&
+               t >= mesh.sharedMeshes[k].firstTriangle + mesh.sharedMeshes[k].triangleCount) {
+            ++k;
+        }
+        return k == mesh.sharedMeshes.size() || t < mesh.sharedMeshes[k].firstTriangle;
+    };
+    appendRange(0, static_cast<uint32_t>(mesh.triangles.size()), inWorld);
+    std::vector<SharedMesh> kept;
+    for (SharedMesh& shared : mesh.sharedMeshes) {
+        if (shared.placements.empty()) continue;  // drawn nowhere
+        const auto first = static_cast<uint32_t>(order.size());
+        appendRange(shared.firstTriangle, shared.firstTriangle + shared.triangleCount,
+                    [&](uint32_t t) { return !placedInWorld[t]; });
+        shared.firstTriangle = first;
+        shared.triangleCount = static_cast<uint32_t>(order.size()) - first;
+        if (shared.triangleCount > 0) kept.push_back(std::move(shared));
+    }
+    mesh.sharedMeshes = std::move(kept);
+    reorderTriangles(mesh, order);
     return mesh;
+}
+
+// What the laid-out mesh is lit by: its emitting triangles, all in the world, and its other lights.
+LightDescriptions lightDescriptions(const MeshData& mesh, const std::pair<glm::vec3, glm::vec3>& bounds) {
+    LightDescriptions lights;
+    lights.triangles = mesh.triangles.size();
+    const uint32_t worldEnd = mesh.sharedMeshes.empty() ? static_cast<uint32_t>(mesh.triangles.size())
+                                                        : mesh.sharedMeshes.front().firstTriangle;
+    for (uint32_t t = 0; t < worldEnd; ++t) {
+        const Material& material = mesh.materials[mesh.triangleMaterials[t]];
+        if (!emitsLight(material)) continue;
+        const auto& c = mesh.triangles[t];
+        lights.emitters.push_back({t, {mesh.positions[c[0]], mesh.positions[c[1]], mesh.positions[c[2]]}, &material,
+                                   cornerUvs(mesh, t)});
+    }
+    lights.pointLights = mesh.pointLights;
+    lights.directionalLights = mesh.directionalLights;
+    lights.environment = mesh.environment;
+    const auto& [lower, upper] = bounds;
+    lights.sceneRadius = mesh.positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
+    return lights;
 }
 
 // An Embree geometry of triangles [first, first + count) of the mesh, which it reads in place.
@@ -159,6 +290,7 @@ RTCRayHit embreeRayHit(const Ray& ray) {
     RTCRayHit rayHit{};
     rayHit.ray = embreeRay(ray, std::numeric_limits<float>::infinity());
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     return rayHit;
 }
 
@@ -190,25 +322,48 @@ std::array<int, kPacket> activeLanes(size_t count) {
 }
 }  // namespace
 
-std::optional<RayHit> Scene::hitOf(uint32_t geometry, uint32_t primitive, float t, float u, float v) const {
+std::optional<RayHit> Scene::hitOf(uint32_t instance, uint32_t geometry, uint32_t primitive, float t, float u,
+                                   float v) const {
     if (geometry == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    const uint32_t triangle = primitive + (geometry == 1 ? firstCutout_ : 0);
-    return RayHit{t, u, v, triangle};
+    if (instance == RTC_INVALID_GEOMETRY_ID) [[likely]] {
+        return RayHit{t, u, v, primitive + (geometry == 1 ? firstCutout_ : 0), kNoPlacement};
+    }
+    const uint32_t placement = instance - kFirstPlacementID;
+    const Placement& p = placements_[placement];
+    return RayHit{t, u, v, primitive + (geometry == 1 ? p.firstCutout : p.first), placement};
+}
+
+void Scene::attachTriangles(RTCScene scene, const TriangleRange& range) {
+    RTCDevice device = embreeDevice();
+    if (range.firstCutout > range.first) {
+        RTCGeometry opaque = triangleGeometry(device, mesh_, range.first, range.firstCutout - range.first);
+        rtcCommitGeometry(opaque);
+        rtcAttachGeometryByID(scene, opaque, 0);
+        rtcReleaseGeometry(opaque);
+    }
+    if (range.end > range.firstCutout) {
+        auto& cutouts = *cutouts_.emplace_back(std::make_unique<CutoutTriangles>());
+        for (uint32_t i = range.firstCutout; i < range.end; ++i) {
+            cutouts.uvs.push_back(cornerUvs(mesh_, i));
+            cutouts.materials.push_back(&material(i));
+        }
+        RTCGeometry cutout = triangleGeometry(device, mesh_, range.firstCutout, range.end - range.firstCutout);
+        attachCutoutFilter(cutout, cutouts);
+        rtcCommitGeometry(cutout);
+        rtcAttachGeometryByID(scene, cutout, 1);
+        rtcReleaseGeometry(cutout);
+    }
 }
 
 Scene::Scene(MeshData mesh, Traversal traversal)
     : mesh_(std::move(mesh)),
-      materials_(validated(mesh_).materials),
-      lights_(cutoutsLast(orientedToNormals(mesh_))) {
-    boundsMin_ = glm::vec3(std::numeric_limits<float>::infinity());
-    boundsMax_ = -boundsMin_;
-    for (const auto& p : mesh_.positions) {
-        boundsMin_ = glm::min(boundsMin_, p);
-        boundsMax_ = glm::max(boundsMax_, p);
-    }
-
+      bounds_(worldBounds(validated(mesh_))),
+      summary_{.roundingGapShare = roundingGapShare(mesh_)},
+      materials_(mesh_.materials),
+      lights_(lightDescriptions(laidOut(orientedToNormals(mesh_)), bounds_)) {
     triangles_.reserve(mesh_.triangles.size());
     summary_.triangles = mesh_.triangles.size();
+    summary_.placedTriangles = placedTriangles(mesh_);
     for (size_t i = 0; i < mesh_.triangles.size(); ++i) {
         const auto& tri = mesh_.triangles[i];
         const glm::vec3 cross = glm::cross(mesh_.positions[tri[1]] - mesh_.positions[tri[0]],
@@ -230,34 +385,42 @@ Scene::Scene(MeshData mesh, Traversal traversal)
     RTCDevice device = embreeDevice();
     // Embree reads the arrays in place: positions padded by the 4 bytes it may read past the end.
     mesh_.positions.reserve(mesh_.positions.size() + 1);
-    rtcScene_ = rtcNewScene(device);
-    summary_.roundingGapShare = roundingGapShare(mesh_);
     summary_.watertight = usesWatertightTest(traversal, summary_.roundingGapShare);
-    if (summary_.watertight) rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
-    const size_t count = mesh_.triangles.size();
-    size_t first = 0;
-    while (first < count && !isCutout(mesh_, first)) ++first;
-    firstCutout_ = static_cast<uint32_t>(first);
-    // Geometry 0: the opaque triangles; geometry 1: the cut-outs, behind their filter.
-    if (first > 0) {
-        RTCGeometry opaque = triangleGeometry(device, mesh_, 0, first);
-        rtcCommitGeometry(opaque);
-        rtcAttachGeometryByID(rtcScene_, opaque, 0);
-        rtcReleaseGeometry(opaque);
-    }
-    if (first < count) {
-        cutouts_ = std::make_unique<CutoutTriangles>();
-        for (size_t i = first; i < count; ++i) {
-            cutouts_->uvs.push_back(cornerUvs(mesh_, i));
-            cutouts_->materials.push_back(&material(static_cast<uint32_t>(i)));
+    // Each range of triangles (the world's, each shared mesh's) as an Embree scene of its own.
+    const auto newScene = [&] {
+        RTCScene scene = rtcNewScene(device);
+        if (summary_.watertight) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+        return scene;
+    };
+    const auto rangeOf = [&](uint32_t first, uint32_t end) {
+        uint32_t firstCutout = first;
+        while (firstCutout < end && !isCutout(mesh_, firstCutout)) ++firstCutout;
+        return TriangleRange{first, firstCutout, end};
+    };
+    rtcScene_ = newScene();
+    const auto world = rangeOf(0, mesh_.sharedMeshes.empty() ? static_cast<uint32_t>(mesh_.triangles.size())
+                                                            : mesh_.sharedMeshes.front().firstTriangle);
+    firstCutout_ = world.firstCutout;
+    attachTriangles(rtcScene_, world);
+    for (const SharedMesh& shared : mesh_.sharedMeshes) {
+        const TriangleRange range = rangeOf(shared.firstTriangle, shared.firstTriangle + shared.triangleCount);
+        RTCScene sharedScene = newScene();
+        attachTriangles(sharedScene, range);
+        rtcCommitScene(sharedScene);
+        for (const glm::mat4& toWorld : shared.placements) {
+            RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(instance, sharedScene);
+            rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &toWorld[0][0]);
+            rtcCommitGeometry(instance);
+            rtcAttachGeometryByID(rtcScene_, instance, kFirstPlacementID + static_cast<uint32_t>(placements_.size()));
+            rtcReleaseGeometry(instance);
+            placements_.push_back({toWorld, glm::transpose(glm::inverse(glm::mat3(toWorld))), range.first,
+                                   range.firstCutout});
         }
-        RTCGeometry cutout = triangleGeometry(device, mesh_, first, count - first);
-        attachCutoutFilter(cutout, *cutouts_);
-        rtcCommitGeometry(cutout);
-        rtcAttachGeometryByID(rtcScene_, cutout, 1);
-        rtcReleaseGeometry(cutout);
+        rtcReleaseScene(sharedScene);  // its instances hold it
     }
+    summary_.placements = placements_.size();
     rtcCommitScene(rtcScene_);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE) throw Error("Embree could not build the scene");
 }
@@ -268,14 +431,14 @@ Scene::~Scene() {
 
 Scene::Scene(Scene&& other) noexcept
     : mesh_(std::move(other.mesh_)),
+      bounds_(other.bounds_),
+      summary_(other.summary_),
       triangles_(std::move(other.triangles_)),
       materials_(std::move(other.materials_)),
       lights_(std::move(other.lights_)),
-      summary_(other.summary_),
-      boundsMin_(other.boundsMin_),
-      boundsMax_(other.boundsMax_),
       rtcScene_(other.rtcScene_),
       firstCutout_(other.firstCutout_),
+      placements_(std::move(other.placements_)),
       cutouts_(std::move(other.cutouts_)) {
     other.rtcScene_ = nullptr;
 }
@@ -290,7 +453,8 @@ std::optional<RayHit> Scene::intersect(const Ray& ray) const {
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     RTCRayHit rayHit = embreeRayHit(ray);
     rtcIntersect1(rtcScene_, &context, &rayHit);
-    return hitOf(rayHit.hit.geomID, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v);
+    return hitOf(rayHit.hit.instID[0], rayHit.hit.geomID, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u,
+                 rayHit.hit.v);
 }
 
 void Scene::intersect(std::span<const Ray> rays, std::span<std::optional<RayHit>> hits,
@@ -310,8 +474,8 @@ void Scene::intersect(std::span<const Ray> rays, std::span<std::optional<RayHit>
         }
         rtcIntersect8(valid.data(), rtcScene_, &context, &packet);
         for (size_t k = 0; k < count; ++k) {
-            hits[first + k] = hitOf(packet.hit.geomID[k], packet.hit.primID[k], packet.ray.tfar[k],
-                                    packet.hit.u[k], packet.hit.v[k]);
+            hits[first + k] = hitOf(packet.hit.instID[0][k], packet.hit.geomID[k], packet.hit.primID[k],
+                                    packet.ray.tfar[k], packet.hit.u[k], packet.hit.v[k]);
         }
     }
 }
@@ -334,7 +498,36 @@ void Scene::occluded(std::span<const Ray> rays, std::span<const float> distances
     }
 }
 
+// The surface record at a hit in a placed shared mesh, from its own coordinates to the world's.
+// Apart from Scene::surface, so that a flat scene's hits pay a test and no more.
+[[gnu::noinline]] void Scene::placeInWorld(SurfaceHit& hit, const Placement& placement) {
+    // The point and its error bound through the affine map (pbrt-v4's Transform of a Point3fi):
+    // the map's own rounding, gamma(3) of each row's terms, plus the bound carried through |M|.
+    // Embree moves the ray into the shared mesh's coordinates and back as well; that rounding is
+    // relative to the world's coordinates, which gamma(4) of the largest of the point's and the
+    // translation's covers, as the local term in localSurface does.
+    const glm::mat4& m = placement.toWorld;
+    const glm::vec3 local = hit.point;
+    const glm::mat3 linear(m);
+    const glm::mat3 magnitude(glm::abs(linear[0]), glm::abs(linear[1]), glm::abs(linear[2]));
+    const glm::vec3 translation(m[3]);
+    hit.point = linear * local + translation;
+    const glm::vec3 terms = magnitude * glm::abs(local) + glm::abs(translation);
+    const float reach = glm::max(maxComponent(glm::abs(hit.point)), maxComponent(glm::abs(translation)));
+    hit.pointError = gammaBound(3) * terms + (1.0f + gammaBound(3)) * (magnitude * hit.pointError) +
+                     glm::vec3(gammaBound(4) * reach);
+    // Normals by the inverse transpose, which keeps the front side under a mirroring map (mesh.h).
+    hit.normal = glm::normalize(placement.normalToWorld * hit.normal);
+    hit.shadingNormal = hit.smooth ? glm::normalize(placement.normalToWorld * hit.shadingNormal) : hit.normal;
+}
+
 SurfaceHit Scene::surface(const RayHit& rayHit) const {
+    SurfaceHit hit = localSurface(rayHit);
+    if (rayHit.placement != kNoPlacement) [[unlikely]] placeInWorld(hit, placements_[rayHit.placement]);
+    return hit;
+}
+
+SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     const uint32_t triangle = rayHit.triangle;
     const auto& tri = mesh_.triangles[triangle];
     const glm::vec3& p0 = mesh_.positions[tri[0]];

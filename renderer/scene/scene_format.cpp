@@ -85,6 +85,27 @@ void splitIntoLines(std::vector<std::string>& warnings, size_t from) {
 }
 }  // namespace
 
+namespace {
+std::string counted(uint64_t n, const std::string& thing) {
+    return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+}  // namespace
+
+void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget) {
+    if (count.stored <= budget.triangles &&
+        count.placements <= (budget.triangles - count.stored) / kTrianglesPerInstance) {
+        return;
+    }
+    std::string message = path + ": " + counted(count.stored, "triangle") + " after instancing";
+    if (count.placements > 0) {
+        message += " and " + counted(count.placements, "instance") + " (counted as " +
+                   std::to_string(kTrianglesPerInstance) + " triangles each; " + counted(count.placed, "triangle") +
+                   " placed)";
+    }
+    throw Error(message + " exceed the budget of " + counted(budget.triangles, "triangle") +
+                " (--max-triangles N raises it)");
+}
+
 ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
     const SceneFormat& format = sceneFormatOf(bundle.path);
     if (bundle.files.empty()) throw Error(bundle.path.string() + ": the scene's files are missing");

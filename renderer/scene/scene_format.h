@@ -28,11 +28,34 @@ struct LoadReport {
     std::vector<std::string> warnings;
 };
 
-// What a scene may take of memory, refused past that with the option that raises it: by default
-// what a desktop survives.
+// What a scene may cost, checked while it is parsed, before its geometry is read into memory: the
+// triangles it stores after instancing, each shared mesh's once (mesh.h), plus
+// kTrianglesPerInstance for each placement of a shared mesh. Memory follows that count, not the
+// triangles placed in the world: a stored triangle costs its vertices, indices, normals and BVH
+// share, about 175 bytes (peak RSS of 10^7 flattened grid triangles: 1.75 GB), and a placement an
+// Embree instance and its record, about 570 bytes however large its mesh (10^3 to 10^4 instances
+// of one 10^4-triangle grid: 17.0 to 22.1 MB; scripts/make_instancing_case.py). The default is
+// what a desktop survives: some 9 GB.
+//
+// Decoded texels, all the scene's textures and its environment map together, are budgeted as
+// well (textures/texture_budget.h), refused before the file that would go over is decoded.
 struct SceneBudget {
-    uint64_t textureBytes = kDefaultTextureBudget;  // --texture-budget: all decoded texels together
+    uint64_t triangles = 50'000'000;                // --max-triangles
+    uint64_t textureBytes = kDefaultTextureBudget;  // --texture-budget
 };
+inline constexpr uint64_t kTrianglesPerInstance = 3;
+
+// A scene's triangles as the budget counts them (stored and placements) and as its world has
+// them (placed, which only the message reports).
+struct TriangleCount {
+    uint64_t stored = 0;
+    uint64_t placements = 0;
+    uint64_t placed = 0;
+};
+
+// Throws strata::Error "PATH: N triangles after instancing (...) exceed the budget of B
+// triangles (--max-triangles N raises it)" when stored + 3 placements is over the budget.
+void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget);
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
 // of the scene's own camera, which the scene takes when no description or --camera file gives one.
@@ -71,7 +94,8 @@ struct SceneFormat {
     // naming a missing or malformed file.
     std::vector<SceneFile> (*read)(const std::filesystem::path& path);
     // The mesh (and camera) from a bundle's files, its textures within `budget`; throws
-    // strata::Error naming the file (and line).
+    // strata::Error naming the file (and line), or the budget the scene exceeds (triangles before
+    // reading its geometry, texels before decoding a texture).
     ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget);
 };
 
@@ -83,9 +107,8 @@ const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
 // The registered extensions for messages and help: ".obj, .gltf, .glb".
 std::string knownSceneExtensions();
 
-// The mesh and camera of `bundle`, parsed by the format of its main file.
-ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report = nullptr,
-                           const SceneBudget& budget = {});
+// The mesh and camera of `bundle`, parsed by the format of its main file within `budget`.
+ParsedScene parseSceneFile(const SceneBundle& bundle, LoadReport* report = nullptr, const SceneBudget& budget = {});
 
 // The mesh alone: parseSceneFile(...).mesh.
 MeshData parseSceneMesh(const SceneBundle& bundle, LoadReport* report = nullptr);

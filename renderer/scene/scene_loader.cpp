@@ -123,9 +123,14 @@ std::string describeScene(const LoadedScene& loaded) {
                   loaded.report.nonFiniteVertices, s.emitters, s.emittingArea, s.maxAlbedo,
                   loaded.scene.mesh().pointLights.size(), s.watertight ? "watertight" : "fast",
                   s.roundingGapShare, extent.x, extent.y, extent.z);
+    std::string text = line;
+    if (s.placements > 0) {
+        text += ", " + std::to_string(s.placedTriangles) + " triangles placed by " + std::to_string(s.placements) +
+                " instances";
+    }
     const size_t warnings = loaded.report.warnings.size();
-    if (warnings == 0) return line;
-    return line + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
+    if (warnings == 0) return text;
+    return text + (", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings"));
 }
 
 std::string describeWarnings(const LoadedScene& loaded) {

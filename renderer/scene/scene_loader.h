@@ -33,10 +33,10 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
 // "point_lights", the camera from the camera file, else the description, else the scene file's
 // own (glTF), else framing the scene; `traversal` picks Embree's triangle test
 // (traversal_precision.h); the textures and the description's environment map are decoded
-// within `budget`.
-// Throws strata::Error naming the bad file, or the texture or map that would go over the budget.
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic,
-                       const SceneBudget& budget = {});
+// within `budget`. Throws strata::Error naming the bad file, or the budget the scene exceeds
+// (scene_format.h): its triangles before its geometry is read, the texture or map that would go
+// over it before that is decoded.
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic, const SceneBudget& budget = {});
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,
@@ -44,7 +44,8 @@ LoadedScene loadScene(const std::filesystem::path& path,
 
 // One line for the log: triangles, dropped, emitters, emitting area, max albedo, point lights,
 // the triangle test and the rounding gap share that chose it, the extent (the bounding box's
-// size, in the scene's units: metres for glTF) and how many warnings loading gave.
+// size, in the scene's units: metres for glTF), the triangles placed by instances when there
+// are any, and how many warnings loading gave.
 std::string describeScene(const LoadedScene& loaded);
 
 // Those warnings for the log, printed with that line: "warning: ...\n" each; empty when none.

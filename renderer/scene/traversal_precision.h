@@ -23,6 +23,12 @@
 //
 // Bounce and shadow rays start on the surfaces, inside M; a camera far outside the scene's
 // bounds widens the bands for its own rays (not for the paths after them).
+//
+// A shared mesh's triangles (mesh.h) count as their placements make them in the world: M is the
+// world's, and a placement's linear map L raises P / A by sigma_1^2 / |det L| at most (exactly,
+// for a similarity). Embree tests them in the shared mesh's coordinates, after moving the ray
+// there; the two triangles on an edge are both tested with that one moved ray, so their band is
+// the one above, measured in those coordinates, which is the world's divided by the scale.
 #include "scene/mesh.h"
 
 namespace strata {
@@ -35,7 +41,8 @@ enum class Traversal {
 
 inline constexpr double kTolerableGapShare = 1e-5;
 
-// The largest u M P / A over the mesh's triangles of nonzero area (above); 0 when there is none.
+// The largest u M P / A over the mesh's triangles of nonzero area, in the world (above); 0 when
+// there is none.
 double roundingGapShare(const MeshData& mesh);
 
 // Whether a scene whose rounding gap share is `gapShare` is traced with the watertight test:

@@ -1,6 +1,6 @@
 // Bad input, table-driven: every loader and option answers with one line "strata: ..." naming the
 // file and line or the option, a non-zero exit, no crash or hang, and an existing output file left
-// untouched. The same table is the README's reliability section.
+// untouched. The same tables are docs/reliability.md's "Bad input" and "Tolerated input".
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -42,8 +42,15 @@ std::string gltfTriangle(const std::string& primitive, const std::string& extra 
            R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}])" + extra + "}";
 }
 
+// The triangle (without its indices) used by three nodes: one primitive stored, placed three times.
+std::string gltfPlacedThrice() {
+    std::string gltf = gltfTriangle("");
+    const std::string nodes = R"("nodes":[{"mesh":0}])";
+    return gltf.replace(gltf.find(nodes), nodes.size(), R"("nodes":[{"children":[1,2,3]},{"mesh":0},{"mesh":0},{"mesh":0}])");
+}
+
 struct BadInputCase {
-    const char* what;       // the README's description of the case
+    const char* what;       // the case, as docs/reliability.md describes it
     std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
     const char* arguments;  // strata's arguments; {dir} is the case's folder
     const char* expected;   // text the one error line must contain
@@ -162,6 +169,14 @@ const std::vector<BadInputCase> kCliCases = {
     {"render --sampler unknown", {}, "render {dir}/s.obj --sampler sobol", "--sampler: unknown sampler 'sobol'"},
     {"render --threads too many", {}, "render {dir}/s.obj --threads 5000", "--threads: must be in 0..1024"},
     {"render --width too large", {}, "render {dir}/s.obj --width 70000", "--width: must be in 1..65536"},
+    {"render --max-triangles 0", {}, "render {dir}/s.obj --max-triangles 0", "--max-triangles: must be at least 1"},
+    {"scene over the triangle budget (OBJ)", {}, "render {dir}/s.obj --max-triangles 1",
+     "s.obj: 2 triangles after instancing exceed the budget of 1 triangle (--max-triangles N raises it)"},
+    {"scene over the triangle budget (glTF, one primitive placed by three nodes)",
+     {{"s.gltf", gltfPlacedThrice()}},
+     "render {dir}/s.gltf --max-triangles 9",
+     "s.gltf: 1 triangle after instancing and 3 instances (counted as 3 triangles each; 3 triangles placed) "
+     "exceed the budget of 9 triangles (--max-triangles N raises it)"},
     {"render --height negative", {}, "render {dir}/s.obj --height -4", "--height: must be in 1..65536"},
     {"render --tonemap unknown", {}, "render {dir}/s.obj --tonemap filmic", "--tonemap: unknown tonemap 'filmic'"},
     {"render --out unknown format", {}, "render {dir}/s.obj --out {dir}/image.bmp",
@@ -204,7 +219,7 @@ const std::vector<BadInputCase> kCliCases = {
 
 // Input that other tools open: it renders, with one "warning: " line for each thing tolerated.
 struct ToleratedCase {
-    const char* what;  // the README's description of the case
+    const char* what;  // the case, as docs/reliability.md describes it
     std::map<std::string, std::string> files;
     std::vector<std::string> warnings;  // each printed as "warning: {dir}/..."
     const char* summary;                // text the load summary line must contain

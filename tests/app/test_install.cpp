@@ -66,7 +66,7 @@ TEST_CASE("install: the installed strata renders, views and benches its bundled 
     REQUIRE_MESSAGE(!assetsAbove(work), work << " has an assets/ folder above it");
     const fs::path strata = installInto(prefix);
     CHECK(fs::is_regular_file(prefix / "share" / "strata" / "NOTICE"));
-    CHECK(!fs::exists(prefix / "share" / "strata" / "readme"));  // the README's pictures stay out
+    CHECK(!fs::exists(prefix / "share" / "strata" / "readme"));  // README and docs/ pictures stay out
 
     checkRendersBundledScene(strata, work);
 

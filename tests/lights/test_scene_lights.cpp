@@ -1,27 +1,40 @@
-// A scene's lights (scene_lights.h): emitting triangles become area lights found by their
-// triangle, point lights are added after them, and the choice among all of them is by power.
+// A scene's lights (scene_lights.h), from the light descriptions a scene hands them: emitting
+// triangles become area lights found by their triangle, point lights are added after them, and
+// the choice among all of them is by power.
+#include <cmath>
 #include <doctest/doctest.h>
 
 #include "lights/scene_lights.h"
 #include "util/constants.h"
-#include "test_support.h"
 
 using namespace strata;
 
+namespace {
+// The scene's next two triangles, the quad a b c d (counter-clockwise) split as (a b c) (a c d),
+// emitting by `material` when it emits.
+void addQuad(LightDescriptions& lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+             const glm::vec3& d, const Material& material) {
+    const auto first = static_cast<uint32_t>(lights.triangles);
+    lights.triangles += 2;
+    if (!emitsLight(material)) return;
+    lights.emitters.push_back({first, {a, b, c}, &material});
+    lights.emitters.push_back({first + 1, {a, c, d}, &material});
+}
+}  // namespace
+
 TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") {
-    MeshData mesh;
+    LightDescriptions descriptions;
     Material dark;
     dark.diffuse = glm::vec3(0.5f);
     Material bright;
     bright.emission = glm::vec3(3.0f);
     Material blue;
     blue.emission = glm::vec3(0.0f, 0.0f, 3.0f);  // mean radiance 1
-    mesh.materials = {dark, bright, blue};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);  // area 1, not emitting
-    test::addQuad(mesh, {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, 1);  // area 2, power 6 pi
-    test::addQuad(mesh, {0, 0, 2}, {0, 1, 2}, {2, 1, 2}, {2, 0, 2}, 2);  // area 2, power 2 pi
-    mesh.pointLights = {PointLight({0, 0, 5}, glm::vec3(0.5f))};    // power 2 pi
-    const SceneLights lights(mesh);
+    addQuad(descriptions, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, dark);    // area 1, not emitting
+    addQuad(descriptions, {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, bright);  // area 2, power 6 pi
+    addQuad(descriptions, {0, 0, 2}, {0, 1, 2}, {2, 1, 2}, {2, 0, 2}, blue);    // area 2, power 2 pi
+    descriptions.pointLights = {PointLight({0, 0, 5}, glm::vec3(0.5f))};        // power 2 pi
+    const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 5);
     CHECK(lights.deltaLights() == 1);
     CHECK(lights.lightOnTriangle(0) == -1);
@@ -42,18 +55,18 @@ TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") 
 TEST_CASE("scene lights: a scene without emitters gets the default sky, or none with --env none") {
     Material dark;
     dark.diffuse = glm::vec3(0.5f);
-    MeshData mesh;
-    mesh.materials = {dark};
-    test::addQuad(mesh, {0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, 0);
-    const SceneLights lit(mesh);
+    LightDescriptions descriptions;
+    addQuad(descriptions, {0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, dark);
+    descriptions.sceneRadius = 2.5f;
+    const SceneLights lit(descriptions);
     REQUIRE(lit.size() == 1);
     CHECK(lit.litByDefault());
     CHECK(lit.lightsAtInfinity() == std::vector<uint32_t>{0});
     CHECK(lit.maxRadianceAtInfinity() == 1.0f);
     // Radiance 1 through the bounding sphere of radius 5/2: pi r^2 4 pi.
     CHECK(lit.light(0).power().x == doctest::Approx(kPi * 6.25f * 4.0f * kPi));
-    mesh.environment.kind = Environment::Kind::None;
-    const SceneLights lights(mesh);
+    descriptions.environment.kind = Environment::Kind::None;
+    const SceneLights lights(descriptions);
     CHECK(lights.size() == 0);
     CHECK(lights.sampler().empty());
     CHECK_FALSE(lights.litByDefault());
@@ -61,21 +74,26 @@ TEST_CASE("scene lights: a scene without emitters gets the default sky, or none 
 
 namespace {
 // A unit square emitting Le = 2: power 2 pi, bounding radius 1/sqrt 2.
-MeshData unitLampQuad() {
+LightDescriptions unitLampQuad(const Material& lamp) {
+    LightDescriptions descriptions;
+    addQuad(descriptions, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, lamp);
+    descriptions.sceneRadius = 0.5f * std::sqrt(2.0f);
+    return descriptions;
+}
+
+Material lampOf(float radiance) {
     Material lamp;
-    lamp.emission = glm::vec3(2.0f);
-    MeshData mesh;
-    mesh.materials = {lamp};
-    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
-    return mesh;
+    lamp.emission = glm::vec3(radiance);
+    return lamp;
 }
 }  // namespace
 
 TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
-    MeshData mesh = unitLampQuad();
-    mesh.environment.kind = Environment::Kind::Uniform;
-    mesh.environment.radiance = glm::vec3(1.0f / kPi);                   // power pi (1/2) 4 pi / pi = 2 pi
-    const SceneLights lights(mesh);
+    const Material lamp = lampOf(2.0f);
+    LightDescriptions descriptions = unitLampQuad(lamp);
+    descriptions.environment.kind = Environment::Kind::Uniform;
+    descriptions.environment.radiance = glm::vec3(1.0f / kPi);  // power pi (1/2) 4 pi / pi = 2 pi
+    const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 3);
     CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
     CHECK_FALSE(lights.litByDefault());
@@ -83,8 +101,8 @@ TEST_CASE("scene lights: an environment comes after the triangles' lights and is
 }
 
 TEST_CASE("scene lights: a new environment replaces the old one's light alone and re-weighs the choice") {
-    MeshData mesh = unitLampQuad();
-    SceneLights lights(mesh);  // no environment given: the lamp keeps the outside black
+    const Material lamp = lampOf(2.0f);
+    SceneLights lights(unitLampQuad(lamp));  // no environment given: the lamp keeps the outside black
     REQUIRE(lights.size() == 2);
     const Light* triangleLight = &lights.light(0);
     CHECK(lights.lightsAtInfinity().empty());

@@ -226,13 +226,27 @@ TEST_CASE("gltf: node transforms, T*R*S and matrix, through the hierarchy") {
     model.doc["meshes"].push_back({{"primitives", json::array({primitive})}});
     const int child = model.addNode({{"mesh", 1}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 10, 1}}}, false);
     model.addNode({{"translation", {5, 0, 0}}, {"children", {child}}});
+    // The two nodes use one primitive: stored once, placed twice.
     const MeshData mesh = parse(model.gltf()).mesh;
-    REQUIRE(mesh.positions.size() == 6);
-    checkNear(mesh.positions[0], {1, 2, 3});
-    checkNear(mesh.positions[1], {1, 4, 3});
-    checkNear(mesh.positions[2], {-1, 2, 3});
-    CHECK(mesh.positions[4] == glm::vec3(6, 0, 10));
+    REQUIRE(mesh.positions.size() == 3);
+    REQUIRE(mesh.sharedMeshes.size() == 1);
+    REQUIRE(mesh.sharedMeshes[0].placements.size() == 2);
+    const auto placed = [&](size_t placement, size_t vertex) {
+        return glm::vec3(mesh.sharedMeshes[0].placements[placement] * glm::vec4(mesh.positions[vertex], 1.0f));
+    };
+    checkNear(placed(0, 0), {1, 2, 3});
+    checkNear(placed(0, 1), {1, 4, 3});
+    checkNear(placed(0, 2), {-1, 2, 3});
+    CHECK(placed(1, 1) == glm::vec3(6, 0, 10));
     CHECK(geometricNormal(mesh, 0).z == doctest::Approx(1.0f));
+    // Used once each, the primitives are flattened into world space as they always were.
+    model.doc["meshes"][1]["primitives"][0]["material"] = 0;
+    model.doc["materials"] = json::array({json::object()});
+    const MeshData flat = parse(model.gltf()).mesh;
+    REQUIRE(flat.positions.size() == 6);
+    CHECK(flat.sharedMeshes.empty());
+    checkNear(flat.positions[1], {1, 4, 3});
+    CHECK(flat.positions[4] == glm::vec3(6, 0, 10));
 }
 
 TEST_CASE("gltf: a negative determinant flips the winding, so the front stays the front") {
@@ -540,8 +554,29 @@ TEST_CASE("gltf: assimp's glTF 2.0 test models load or fail with one line naming
     CHECK(errorOfFile("TestNoRootNode/SceneWithoutNodes.gltf") ==
           path("TestNoRootNode/SceneWithoutNodes.gltf") + ": the scene has no usable triangles");
 
-    // 75730 triangles in its meshes, 121496 as its nodes instance them, 11160 of those degenerate.
+    // 75730 triangles in its meshes, 121496 as its nodes instance them, 11160 of those degenerate:
+    // its primitives used more than once are stored once each.
     const LoadedScene engine = loadScene(root / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
-    CHECK(engine.scene.summary().triangles == 110336);
+    CHECK(engine.scene.summary().placedTriangles == 110336);
+    CHECK(engine.scene.summary().triangles == 65311);
     CHECK(engine.report.droppedTriangles == 11160);
+}
+
+TEST_CASE("gltf: the triangle budget counts stored triangles and instances from the accessors, before reading them") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const json primitive = {{"attributes", {{"POSITION", positions}}}};
+    model.meshNode(primitive);
+    model.addNode({{"mesh", 0}});  // the same primitive again: stored once, placed twice
+    model.meshNode(primitive, {{"scale", {2, 2, 2}}});
+    CHECK_NOTHROW(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{10}));
+    CHECK_THROWS_WITH_AS(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{9}),
+                         "mem/model.gltf: 1 triangle after instancing and 3 instances (counted as 3 triangles each; "
+                         "3 triangles placed) exceed the budget of 9 triangles (--max-triangles N raises it)",
+                         Error);
+    // An accessor that claims 3e8 positions in a 36-byte buffer is refused by the budget, from its
+    // count, before anything would be read or allocated for it.
+    model.doc["accessors"][positions]["count"] = 300000000;
+    CHECK_THROWS_WITH_AS(parse(model.gltf()),
+                         doctest::Contains("100000000 triangles after instancing and 3 instances"), Error);
 }

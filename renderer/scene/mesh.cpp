@@ -1,0 +1,55 @@
+#include "scene/mesh.h"
+
+#include <limits>
+#include <glm/common.hpp>
+
+namespace strata {
+
+std::pair<glm::vec3, glm::vec3> worldBounds(const MeshData& mesh) {
+    glm::vec3 lower(std::numeric_limits<float>::infinity());
+    glm::vec3 upper = -lower;
+    const auto include = [&](const glm::vec3& p) {
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    };
+    if (mesh.sharedMeshes.empty()) {
+        for (const glm::vec3& p : mesh.positions) include(p);
+        return {lower, upper};
+    }
+    size_t worldFirst = 0;
+    const auto includeWorld = [&](size_t end) {
+        for (size_t t = worldFirst; t < end; ++t) {
+            for (uint32_t v : mesh.triangles[t]) include(mesh.positions[v]);
+        }
+    };
+    for (const SharedMesh& shared : mesh.sharedMeshes) {
+        includeWorld(shared.firstTriangle);
+        worldFirst = shared.firstTriangle + size_t{shared.triangleCount};
+        glm::vec3 boxLower(std::numeric_limits<float>::infinity());
+        glm::vec3 boxUpper = -boxLower;
+        for (size_t t = shared.firstTriangle; t < worldFirst; ++t) {
+            for (uint32_t v : mesh.triangles[t]) {
+                boxLower = glm::min(boxLower, mesh.positions[v]);
+                boxUpper = glm::max(boxUpper, mesh.positions[v]);
+            }
+        }
+        if (!(boxLower.x <= boxUpper.x)) continue;  // no triangles
+        for (const glm::mat4& placement : shared.placements) {
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::vec3 local((corner & 1) ? boxUpper.x : boxLower.x, (corner & 2) ? boxUpper.y : boxLower.y,
+                                      (corner & 4) ? boxUpper.z : boxLower.z);
+                include(glm::vec3(placement * glm::vec4(local, 1.0f)));
+            }
+        }
+    }
+    includeWorld(mesh.triangles.size());
+    return {lower, upper};
+}
+
+uint64_t placedTriangles(const MeshData& mesh) {
+    uint64_t placed = mesh.triangles.size();
+    for (const SharedMesh& s : mesh.sharedMeshes) placed += (s.placements.size() * s.triangleCount) - s.triangleCount;
+    return placed;
+}
+
+}  // namespace strata
