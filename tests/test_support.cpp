@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -48,6 +49,19 @@ long peakRssKilobytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss;
+}
+
+std::set<std::string> includedFolders(const std::string& folder) {
+    const std::regex include(R"re(#include "([a-z_]+)/)re");
+    std::set<std::string> folders;
+    for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "renderer" / folder)) {
+        std::ifstream in(entry.path());
+        for (std::string line; std::getline(in, line);) {
+            std::smatch match;
+            if (std::regex_search(line, match, include)) folders.insert(match[1]);
+        }
+    }
+    return folders;
 }
 
 CommandResult runCommand(const std::string& commandLine) {

@@ -3,6 +3,7 @@
 // the statistics that turn "close enough" into k standard errors.
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,9 @@ std::string fileBytes(const std::filesystem::path& path);
 std::string forgedTga();
 // The process's peak resident memory so far (getrusage), in KB.
 long peakRssKilobytes();
+// The renderer folders (io, film, ...) that the sources of renderer/`folder` include from, its own
+// among them: what the tests of each folder's place in the library's layering compare.
+std::set<std::string> includedFolders(const std::string& folder);
 // Runs a shell command line, capturing its output.
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).

@@ -1,9 +1,10 @@
 #pragma once
 // The memory a scene's decoded textures may take together, its materials' textures and its
 // environment map alike (`--texture-budget`). Each image is counted from its file's header
-// (io/image_header.h) before anything is allocated for its texels, so a scene that would exhaust
-// a desktop's memory is refused at the image that would cross the budget, with its figures and
-// the option that raises it, instead of being killed by the system part-way.
+// (readTextureHeader, io/texture_image.h) before anything is allocated for its texels, so a
+// scene that would exhaust a desktop's memory is refused at the image that would cross the
+// budget, with its figures and the option that raises it, instead of being killed by the system
+// part-way.
 //
 // What is counted is the texels as stored (textures/texture.h): a byte a channel for 8-bit
 // images, four for floats. A decoder's working memory comes and goes with one image on top of it.

@@ -1,7 +1,6 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
-#include <regex>
 #include <set>
 
 #include "util/error.h"
@@ -90,16 +89,7 @@ TEST_CASE("image io: an image's size must fit 2^28 pixels and its file's bytes")
 TEST_CASE("image io: io knows files and images, not the film: its includes go to io, textures and util only") {
     // The film develops into an io Image (AccumulationBuffer::meanImage); io reads and writes
     // images for film, lights and textures alike, so it may include none of them but textures.
-    const std::regex include(R"re(#include "([a-z_]+)/)re");
-    std::set<std::string> folders;
-    for (const auto& entry : std::filesystem::directory_iterator(test::sourceDir() / "renderer/io")) {
-        std::ifstream in(entry.path());
-        for (std::string line; std::getline(in, line);) {
-            std::smatch match;
-            if (std::regex_search(line, match, include)) folders.insert(match[1]);
-        }
-    }
-    CHECK(folders == std::set<std::string>{"io", "textures", "util"});
+    CHECK(test::includedFolders("io") == std::set<std::string>{"io", "textures", "util"});
 }
 
 TEST_CASE("tonemap: sRGB encoding and curves at known points") {

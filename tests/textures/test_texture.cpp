@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <random>
+#include <set>
+#include <string>
 #include <vector>
 
+#include "test_support.h"
 #include "textures/texture.h"
 #include "util/error.h"
 
@@ -105,4 +108,10 @@ TEST_CASE("texture statistics and channel layouts") {
     // A non-finite UV reads a texel rather than an out-of-range index.
     CHECK(t.lookup({std::numeric_limits<float>::quiet_NaN(), 0.5f}).x == 0.0f);
     CHECK_THROWS_AS(Texture(2, 2, 1, {1.0f}), Error);
+}
+
+TEST_CASE("textures know texels, not files: their includes go to textures and util only") {
+    // The decoders (io/texture_image.h) make textures and the budget counts them; a texture
+    // knows neither, so io and scene build on textures and never the other way round.
+    CHECK(test::includedFolders("textures") == std::set<std::string>{"textures", "util"});
 }
