@@ -189,13 +189,13 @@ TEST_CASE("scene loader: the description's environment map counts with the textu
     REQUIRE(stbi_write_png((dir / "t.png").string().c_str(), 8, 8, 3, texels.data(), 8 * 3));
     const SceneBundle bundle = readSceneBundle(dir / "s.obj");
     // The texture: 8 x 8 x 3 bytes; the map: 8 x 4 x 3 floats.
-    const LoadedScene loaded = parseScene(bundle, Traversal::Automatic, SceneBudget{192 + 384});
+    const LoadedScene loaded = parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 192 + 384});
     CHECK(loaded.report.textureBytes == 192);
-    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{192 + 383}),
+    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 192 + 383}),
                          doctest::Contains("sky.exr: the environment map is 8 x 4, 3 channels of 32 bits (384 bytes); "
                                            "with it the scene's textures would take 576 bytes, over the --texture-budget of 575 bytes"),
                          Error);
-    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{191}),
+    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 191}),
                          doctest::Contains("s.mtl:3: map_Kd: texture 't.png' is 8 x 8, 3 channels of 8 bits"), Error);
 }
 
