@@ -1,20 +1,26 @@
 #include "render_command.h"
 
 #include <CLI/App.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 #include "integrator/pass_partition.h"
 #include "integrator/render_session.h"
 #include "progress.h"
 #include "render_job.h"
 #include "render_options.h"
+#include "usage.h"
 
 namespace strata {
 namespace {
@@ -23,26 +29,35 @@ struct RenderCommand {
     RenderOptions render;
     int spp = 240;
     std::vector<std::string> outputs;
-    float exposure = 0.0f;
-    std::string tonemap = "clamp";
+    std::optional<float> exposure;  // unset: auto (io/auto_exposure.h), or 0 under the clamp
+    std::string tonemap = std::string(tonemapName(kDefaultTonemap));
     bool json = false;
     bool earlyOut = true;
 
-    // The checks that need no scene, so a bad option fails before a large scene is read.
-    Tonemap checkOptions(int ranks) const;
+    // The checks that need no scene, so a bad option or an output that cannot be written fails
+    // before a large scene is read or any pass is rendered.
+    Tonemap checkOptions(const RenderJob& job) const;
     void run() const;
 };
 
-Tonemap RenderCommand::checkOptions(int ranks) const {
+Tonemap RenderCommand::checkOptions(const RenderJob& job) const {
     if (spp < kPathsPerPass || spp % kPathsPerPass != 0) {
-        throw Error("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
-                    std::to_string(spp));
+        throw UsageError("--spp: must be a positive multiple of 24 (one pass = 24 paths per pixel), got " +
+                         std::to_string(spp));
     }
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
-    for (const auto& out : outputs) imageFormatOf(out);  // reject a bad extension before rendering
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (exposure && !(std::abs(*exposure) <= kExposureLimit)) {
+        const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
+        throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
+    }
+    render.backdrop();  // a bad --background before the scene is read
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
-    if (render.noiseThreshold > 0.0 && ranks > 1) throw Error("--noise-threshold: not available under MPI");
+    if (render.noiseThreshold > 0.0 && job.ranks() > 1) {
+        throw UsageError("--noise-threshold: not available under MPI");
+    }
+    // Only rank 0 writes: the other ranks' hosts need not have the folder.
+    for (const auto& out : outputs) checkOutputOption("--out", out, job.isRoot());
     return *tonemapKind;
 }
 
@@ -50,16 +65,17 @@ void RenderCommand::run() const {
     // Under mpirun the ranks split the passes (render_job.h); every step that can fail runs on all
     // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
     RenderJob job;
-    const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job.ranks()); });
+    const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job); });
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
-    const LoadedScene loaded =
-        job.collectively([&] { return render.parseScene(std::move(files), render.environment()); });
+    const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {
         std::fprintf(stderr, "%s\n%s", describeScene(loaded).c_str(), describeWarnings(loaded).c_str());
-        if (loaded.scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+        if (loaded.scene.lights().litByDefault()) {
+            std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(loaded.scene.lights()).c_str());
+        }
         if (!loaded.scene.mesh().pointLights.empty() && !settings.integrator.nextEventEstimation) {
             std::fprintf(stderr,
                          "note: the scene's point lights need next-event estimation; with --no-nee they are dark\n");
@@ -93,6 +109,10 @@ void RenderCommand::run() const {
     // Rank 0 reports the whole job's progress: JobProgress adds up every rank's passes.
     std::optional<ProgressReporter> progress;
     if (job.isRoot()) progress.emplace("render", passesToRender, kPathsPerPass);
+    // The PNG's exposure, unless given: from rank 0's first pass, the first pass of the image.
+    const bool meterExposure = !exposure && tonemapKind != Tonemap::Clamp;
+    float pngExposure = exposure.value_or(0.0f);
+    bool metered = false;
     {
         // Made and destroyed on every rank alike, around (not in) the step that may fail on some.
         JobProgress jobProgress(job);
@@ -101,6 +121,10 @@ void RenderCommand::run() const {
             // checkOptions refuses it under MPI) once adaptive sampling has finished every pixel.
             session.run({}, [&](const PassReport& report) {
                 jobProgress.addPass(report.paths);
+                if (meterExposure && job.isRoot() && !metered) {
+                    pngExposure = autoExposure(session.buffer().meanImage());
+                    metered = true;
+                }
                 if (progress) {
                     const PassTally done = jobProgress.tally();
                     progress->update(done.passes, done.paths);
@@ -126,10 +150,22 @@ void RenderCommand::run() const {
                      passes, spp, job.ranks(), seconds, counters.paths / seconds * 1e-6);
     }
 
+    // Every output is encoded before any replaces its file: a failure leaves all of them as they were.
     const Image image = buffer.meanImage();
+    if (metered && std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+            return imageFormatOf(out) == ImageFormat::Png;
+        })) {
+        std::fprintf(stderr, "note: PNG exposure %+.2f stops, from the first pass (--exposure fixes it)\n",
+                     pngExposure);
+    }
+    std::vector<std::unique_ptr<OutputFile>> outputFiles;
     for (const auto& out : outputs) {
-        writeImage(out, image, PngSettings{exposure, tonemapKind});
-        std::fprintf(stderr, "wrote %s\n", out.c_str());
+        outputFiles.push_back(std::make_unique<OutputFile>(out));
+        writeImage(*outputFiles.back(), image, PngSettings{pngExposure, tonemapKind});
+    }
+    for (const auto& file : outputFiles) {
+        file->commit();
+        std::fprintf(stderr, "wrote %s\n", file->target().c_str());
     }
 
     const glm::dvec3 mean = buffer.imageMean();
@@ -159,6 +195,8 @@ void RenderCommand::run() const {
             {"pixels_done_early", buffer.pixelCount() - session.adaptive().activePixels()},
             {"mean_spp", static_cast<double>(counters.paths) / buffer.pixelCount()},
             {"outputs", outputs},
+            {"tonemap", tonemap},
+            {"exposure", pngExposure},
         };
         std::printf("%s\n", report.dump().c_str());
     } else if (buffer.droppedSamples() > 0) {
@@ -174,9 +212,15 @@ void addRenderCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("render", "Render headless, progressively, to image files");
     command->render.addTo(*sub);
     sub->add_option("--spp", command->spp, "Samples per pixel, a multiple of 24")->capture_default_str();
-    sub->add_option("--out", command->outputs, "Output image(s): .exr/.pfm linear, .png sRGB (repeatable)");
-    sub->add_option("--exposure", command->exposure, "PNG exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "PNG tonemap: " + tonemapNames())->capture_default_str();
+    sub->add_option("--out", command->outputs,
+                    "Output image (repeatable): .exr or .pfm linear, .png sRGB, in any letter case; its "
+                    "folder must exist and be writable (checked before rendering)");
+    sub->add_option("--exposure", command->exposure,
+                    "PNG exposure in stops (default: auto, middle grey 0.18 for the first pass's "
+                    "log-average luminance; 0 with --tonemap clamp)");
+    sub->add_option("--tonemap", command->tonemap,
+                    "PNG tonemap: " + tonemapNames() + " (aces: ACES filmic, Narkowicz's fit; clamp: linear, cut at 1)")
+        ->capture_default_str();
     sub->add_flag("--json", command->json, "Print a JSON report on stdout");
     sub->add_flag("!--no-early-out", command->earlyOut,
                   "Render even a scene that cannot be anything but black");

@@ -80,6 +80,17 @@ void reduceToRoot(std::span<T> data, MPI_Datatype type, bool root) {
     });
 }
 
+// The exit status main gives `failure` (usage.h).
+int exitStatusOf(std::exception_ptr failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const UsageError&) {
+        return kUsageExitStatus;
+    } catch (...) {
+        return kInputExitStatus;
+    }
+}
+
 std::string messageOf(std::exception_ptr failure) {
     try {
         std::rethrow_exception(failure);
@@ -146,26 +157,32 @@ void RenderJob::settle(std::exception_ptr failure) {
         return;
     }
 #if STRATA_WITH_MPI
-    int firstFailed = failure ? rank_ : ranks_;
-    MPI_Allreduce(MPI_IN_PLACE, &firstFailed, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (firstFailed == ranks_) return;
+    // The lowest failing rank and its failure's exit status (MINLOC keeps the status of the
+    // lowest rank), so that every rank exits with that status.
+    struct {
+        int rank;
+        int exitStatus;
+    } first{failure ? rank_ : ranks_, failure ? exitStatusOf(failure) : 0};
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_2INT, MPI_MINLOC, MPI_COMM_WORLD);
+    if (first.rank == ranks_) return;
     constexpr int kMessageTag = 1;
-    if (firstFailed == rank_ && !isRoot()) {
+    if (first.rank == rank_ && !isRoot()) {
         const std::string message = messageOf(failure);
         MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kMessageTag,
                  MPI_COMM_WORLD);
     }
-    if (!isRoot()) throw ErrorReportedByRankZero{};
-    if (firstFailed == 0) std::rethrow_exception(failure);
+    if (!isRoot()) throw ErrorReportedByRankZero{first.exitStatus};
+    if (first.rank == 0) std::rethrow_exception(failure);
     MPI_Status status;
-    MPI_Probe(firstFailed, kMessageTag, MPI_COMM_WORLD, &status);
+    MPI_Probe(first.rank, kMessageTag, MPI_COMM_WORLD, &status);
     int size = 0;
     MPI_Get_count(&status, MPI_CHAR, &size);
     std::string message(static_cast<size_t>(size), '\0');
-    MPI_Recv(message.data(), size, MPI_CHAR, firstFailed, kMessageTag, MPI_COMM_WORLD,
+    MPI_Recv(message.data(), size, MPI_CHAR, first.rank, kMessageTag, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
-    throw Error("rank " + std::to_string(firstFailed) + " of " + std::to_string(ranks_) + ": " +
-                message);
+    message = "rank " + std::to_string(first.rank) + " of " + std::to_string(ranks_) + ": " + message;
+    if (first.exitStatus == kUsageExitStatus) throw UsageError(message);
+    throw Error(message);
 #endif
 }
 
@@ -180,6 +197,7 @@ SceneBundle RenderJob::shareSceneBundle(const std::function<SceneBundle()>& read
     broadcast(bundle.files);
     broadcast(bundle.description);
     broadcast(bundle.camera);
+    broadcast(bundle.environmentMap);
 #endif
     return bundle;
 }

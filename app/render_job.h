@@ -14,12 +14,15 @@
 #include "film/accumulation_buffer.h"
 #include "integrator/progressive_renderer.h"
 #include "scene/scene_loader.h"
+#include "usage.h"
 
 namespace strata {
 
 // Thrown on the ranks other than 0 when a step failed: rank 0 prints the one message for the job,
-// the others only exit non-zero.
-struct ErrorReportedByRankZero {};
+// the others only exit, with the status rank 0 exits with (usage.h).
+struct ErrorReportedByRankZero {
+    int exitStatus = kInputExitStatus;
+};
 
 class RenderJob {
 public:
@@ -37,9 +40,10 @@ public:
     bool underMpi() const { return mpi_; }
 
     // Runs `step` on every rank, then all ranks compare notes: when it threw anywhere, every rank
-    // throws (rank 0 the failure of the lowest failing rank, named "rank N" when not its own; the
-    // others ErrorReportedByRankZero), so no rank is left waiting in a later collective call and
-    // the job ends before any output is written. One rank: runs `step`, exceptions pass through.
+    // throws (rank 0 the failure of the lowest failing rank, named "rank N" when not its own, a
+    // UsageError when that was one; the others ErrorReportedByRankZero), so no rank is left
+    // waiting in a later collective call and the job ends before any output is written. One
+    // rank: runs `step`, exceptions pass through.
     template <typename Step>
     auto collectively(Step&& step) -> std::invoke_result_t<Step&>;
 

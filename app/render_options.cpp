@@ -9,6 +9,7 @@
 #include "bundled_assets.h"
 #include "util/error.h"
 #include "integrator/truncation.h"
+#include "io/image_io.h"
 
 namespace strata {
 
@@ -44,6 +45,10 @@ void RenderOptions::addTo(CLI::App& command) {
         ->excludes(envOption);
     command.add_option("--env-rotate", envRotate, "Turn the environment map about +y (degrees)")
         ->capture_default_str();
+    command.add_option("--background", background,
+                       std::string("What camera rays that miss every surface show: ") + kBackdropSyntax +
+                           " (env: the environment; default: a grey gradient under the default white "
+                           "sky, else the environment)");
     command.add_option("--noise-threshold", noiseThreshold,
                        "Adaptive sampling: a pixel stops receiving passes at this relative "
                        "standard error (0: off)")
@@ -97,6 +102,7 @@ std::vector<std::string> RenderOptions::arguments() const {
         for (float c : envColor) args.push_back(text(c));
     }
     if (envRotate != defaults.envRotate) args.insert(args.end(), {"--env-rotate", text(envRotate)});
+    if (!background.empty()) args.insert(args.end(), {"--background", background});
     if (noiseThreshold != defaults.noiseThreshold) {
         args.insert(args.end(), {"--noise-threshold", text(noiseThreshold)});
     }
@@ -111,17 +117,17 @@ std::vector<std::string> RenderOptions::arguments() const {
 RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     RenderSettings settings;
     const auto kind = parseSamplerKind(sampler);
-    if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
-    if (depth < 0 || depth > 100000) throw Error("--depth: must be in 0..100000");
-    if (threads < 0 || threads > 1024) throw Error("--threads: must be in 0..1024 (0: all cores)");
+    if (!kind) throw UsageError("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
+    if (depth < 0 || depth > 100000) throw UsageError("--depth: must be in 0..100000");
+    if (threads < 0 || threads > 1024) throw UsageError("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     if (epsilon) {
-        if (!(*epsilon > 0.0)) throw Error("--epsilon: must be positive");
+        if (!(*epsilon > 0.0)) throw UsageError("--epsilon: must be positive");
         TruncationChoice choice{};
         try {
             choice = chooseSceneTruncationDepth(*epsilon, scene);
         } catch (const Error& e) {
-            throw Error(std::string("--epsilon: ") + e.what() + "; give --depth instead");
+            throw UsageError(std::string("--epsilon: ") + e.what() + "; give --depth instead");
         }
         settings.integrator.depth = choice.depth;
         std::fprintf(stderr, "depth K = %d from --epsilon %g: truncation bound %.3g (max albedo %.3g, max Le %.3g)\n",
@@ -130,72 +136,98 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
-    if (rouletteDepth < -1) throw Error("--roulette-depth: must be -1 (off) or at least 0");
+    if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
     settings.threads = threads;
     if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
-        throw Error("--noise-threshold: must be in 0..10 (0: off)");
+        throw UsageError("--noise-threshold: must be in 0..10 (0: off)");
     }
     settings.adaptive.threshold = noiseThreshold;
+    settings.backdrop = backdrop();
     return settings;
 }
 
 SceneBundle RenderOptions::readSceneBundle() const {
     std::optional<std::filesystem::path> cameraPath;
     if (!cameraFile.empty()) cameraPath = cameraFile;
-    return strata::readSceneBundle(scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene),
-                                   cameraPath);
+    SceneBundle bundle = strata::readSceneBundle(
+        scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene), cameraPath);
+    if (!env.empty() && env != "none") bundle.environmentMap = SceneFile{env, readExrFile(env)};
+    return bundle;
 }
 
-Environment RenderOptions::environment() const {
-    if (!std::isfinite(envRotate)) throw Error("--env-rotate: must be a finite angle in degrees");
+BackdropSetting RenderOptions::backdrop() const {
+    if (background.empty()) return {};
+    const auto setting = parseBackdrop(background);
+    if (!setting) {
+        throw UsageError("--background: expected " + std::string(kBackdropSyntax) +
+                         " (radiances finite and >= 0), got '" + background + "'");
+    }
+    return *setting;
+}
+
+namespace {
+
+// The environment `options` give, its map decoded from `files` within the scene's texture
+// `budget`; a note on the map to `warnings`.
+Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
+                               const SceneBudget& budget, std::vector<std::string>& warnings) {
+    if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
-    if (!envColor.empty()) {
-        for (float c : envColor) {
+    if (!options.envColor.empty()) {
+        for (float c : options.envColor) {
             if (!(std::isfinite(c) && c >= 0.0f)) {
-                throw Error("--env-color: must be three finite radiances >= 0");
+                throw UsageError("--env-color: must be three finite radiances >= 0");
             }
         }
         environment.kind = Environment::Kind::Uniform;
-        environment.radiance = glm::vec3(envColor[0], envColor[1], envColor[2]);
-    } else if (env == "none") {
+        environment.radiance = glm::vec3(options.envColor[0], options.envColor[1], options.envColor[2]);
+    } else if (options.env == "none") {
         environment.kind = Environment::Kind::None;
-    } else if (!env.empty()) {
+    } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
-        // Checked against the whole budget: the scene's textures are not read yet.
-        const EnvironmentMapFile file = readEnvironmentMap(env, TextureBudget(sceneBudget().textureBytes));
+        const SceneFile& map = *files.environmentMap;
+        // Checked against the whole budget: the scene's textures are decoded after it.
+        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name, TextureBudget(budget.textureBytes));
         if (file.zeroedNegatives > 0) {
-            std::fprintf(stderr, "note: %s: %zu slightly negative texel components (lossy compression) read as 0\n",
-                         env.c_str(), file.zeroedNegatives);
+            warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
+                               " slightly negative texel components (lossy compression) read as 0");
         }
         environment.map = file.map;
-        environment.rotationDegrees = envRotate;
+        environment.rotationDegrees = options.envRotate;
     }
     return environment;
 }
 
+}  // namespace
+
 SceneBudget RenderOptions::sceneBudget() const {
-    if (maxTriangles < 1) throw Error("--max-triangles: must be at least 1");
+    if (maxTriangles < 1) throw UsageError("--max-triangles: must be at least 1");
     SceneBudget budget;
     budget.triangles = maxTriangles;
     budget.textureBytes = static_cast<uint64_t>(std::llround(std::ldexp(textureBudget, 30)));
     return budget;
 }
 
-LoadedScene RenderOptions::parseScene(SceneBundle files, const Environment& environment) const {
-    const Traversal traversal = watertight ? Traversal::Watertight : Traversal::Automatic;
-    LoadedScene loaded = strata::parseScene(std::move(files), traversal, sceneBudget());
+LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+    const SceneBudget budget = sceneBudget();
+    std::vector<std::string> warnings;
+    const Environment given = optionsEnvironment(*this, files, budget, warnings);
+    LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
+                                            budget);
+    loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
     // The --env options override the scene description's environment; without them it stands.
-    if (environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(environment);
+    if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
+    if (environment) *environment = given;
     return loaded;
 }
 
-LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle(), environment()); }
+LoadedScene RenderOptions::loadScene() const { return parseScene(readSceneBundle()); }
 
 Camera RenderOptions::makeCamera(const LoadedScene& loaded) const {
-    if (width && (*width < 1 || *width > 65536)) throw Error("--width: must be in 1..65536");
-    if (height && (*height < 1 || *height > 65536)) throw Error("--height: must be in 1..65536");
+    if (width && (*width < 1 || *width > 65536)) throw UsageError("--width: must be in 1..65536");
+    if (height && (*height < 1 || *height > 65536)) throw UsageError("--height: must be in 1..65536");
     return Camera(loaded.settings.pose, width.value_or(loaded.settings.width),
                   height.value_or(loaded.settings.height));
 }

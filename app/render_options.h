@@ -21,16 +21,17 @@ struct RenderOptions {
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
-    int depth = 5;
+    int depth = kProgramDefaults.depth;
     std::optional<double> epsilon;  // when set, the depth comes from the truncation error
-    std::string sampler = "strata24-bsdf";
+    std::string sampler{samplerName(kProgramDefaults.sampler)};
     uint64_t seed = 0;
     int threads = 0;
-    bool nee = true;
-    int rouletteDepth = kRouletteDepthDefault;
+    bool nee = kProgramDefaults.nextEventEstimation;
+    int rouletteDepth = kProgramDefaults.rouletteDepth;
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y
+    std::string background;        // --background (film/backdrop.h's syntax); empty: automatic
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
     double textureBudget = 4.0;   // --texture-budget, GiB of decoded texels (texture_budget.h)
@@ -43,19 +44,22 @@ struct RenderOptions {
     // Validated settings for the renderer, the depth from --epsilon when given (logged on
     // stderr); throws strata::Error naming the bad option.
     RenderSettings renderSettings(const Scene& scene) const;
+    // What camera rays that miss show (--background); throws strata::Error naming the option.
+    BackdropSetting backdrop() const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
-    // file) without parsing them.
+    // file) and the --env map without parsing them.
     SceneBundle readSceneBundle() const;
-    // The environment the options give (lights/environment.h), its map read and checked; throws
-    // strata::Error naming the option or the file.
-    Environment environment() const;
     // What the scene may take: --max-triangles, and --texture-budget in bytes; throws
-    // strata::Error naming a bad value.
+    // strata::UsageError naming a bad value.
     SceneBudget sceneBudget() const;
-    // Builds the scene from its files; `environment` (environment(), read once by the caller),
-    // unless Default, overrides the scene description's.
-    LoadedScene parseScene(SceneBundle files, const Environment& environment) const;
-    // Loads the scene and camera: parseScene(readSceneBundle(), environment()).
+    // Builds the scene from its files within sceneBudget(), lit by the environment the options
+    // give (lights/environment.h) when they give one, else by the scene description's: the --env
+    // map is decoded from the bundle's copy within the scene's texture budget, and what decoding
+    // tolerated joins the load report's warnings. `environment`, when not null, receives the
+    // options' environment (Default when they give none). Throws strata::Error naming the option
+    // or the file.
+    LoadedScene parseScene(SceneBundle files, Environment* environment = nullptr) const;
+    // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;
     // The camera; width/height options override the camera file.
     Camera makeCamera(const LoadedScene& loaded) const;

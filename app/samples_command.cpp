@@ -20,9 +20,9 @@ struct SamplesCommand {
 
     void run() const {
         const auto kind = parseSamplerKind(sampler);
-        if (!kind) throw Error("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
-        if (passes < 1 || passes > 1000000) throw Error("--passes: must be in 1..1000000");
-        if (depth < 1 || depth > 64) throw Error("--depth: must be in 1..64 (bounces to list)");
+        if (!kind) throw UsageError("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
+        if (passes < 1 || passes > 1000000) throw UsageError("--passes: must be in 1..1000000");
+        if (depth < 1 || depth > 64) throw UsageError("--depth: must be in 1..64 (bounces to list)");
         std::printf("pass,path,bounce,stratum,x,y,z\n");
         for (uint32_t pass = 0; pass < passes; ++pass) {
             for (int path = 0; path < kPathsPerPass; ++path) {

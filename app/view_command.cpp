@@ -1,12 +1,15 @@
 #include "view_command.h"
 
 #include <CLI/App.hpp>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "io/auto_exposure.h"
 #include "util/error.h"
 #include "render_options.h"
+#include "usage.h"
 #include "viewer_run.h"
 
 namespace strata {
@@ -23,34 +26,43 @@ struct ViewCommand {
     int targetSpp = 0;
     float targetSeconds = 0.0f;
     float scale = 1.0f;
-    float exposure = 0.0f;
-    std::string tonemap = "clamp";
+    std::optional<float> exposure;  // unset: auto (io/auto_exposure.h), or 0 under the clamp
+    std::string tonemap = std::string(tonemapName(kDefaultTonemap));
     bool json = false;
 
     void run() const;
 };
 
 void ViewCommand::run() const {
-    if (targetSpp < 0) throw Error("--target-spp: must be at least 0 (0: no limit)");
+    if (targetSpp < 0) throw UsageError("--target-spp: must be at least 0 (0: no limit)");
     if (!(targetSeconds >= 0.0f && targetSeconds <= 1e7f)) {
-        throw Error("--target-seconds: must be in 0..1e7 (0: no limit)");
+        throw UsageError("--target-seconds: must be in 0..1e7 (0: no limit)");
     }
-    if (frames < 0) throw Error("--frames: must be at least 0");
-    if (!(scale >= 0.05f && scale <= 1.0f)) throw Error("--scale: must be in 0.05..1");
+    if (frames < 0) throw UsageError("--frames: must be at least 0");
+    if (!(scale >= 0.05f && scale <= 1.0f)) throw UsageError("--scale: must be in 0.05..1");
     const auto tonemapKind = parseTonemap(tonemap);
-    if (!tonemapKind) throw Error("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
-    if (!screenshot.empty() && std::filesystem::path(screenshot).extension() != ".png") {
-        throw Error("--screenshot: must be a .png file");
+    if (!tonemapKind) throw UsageError("--tonemap: unknown tonemap '" + tonemap + "' (use " + tonemapNames() + ")");
+    if (exposure && !(std::abs(*exposure) <= kExposureLimit)) {
+        const std::string limit = std::to_string(static_cast<int>(kExposureLimit));
+        throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
-    if (!screenshot.empty() && frames == 0) throw Error("--screenshot needs --frames N");
+    const BackdropSetting backdrop = render.backdrop();
+    if (!screenshot.empty()) {
+        if (frames == 0) throw UsageError("--screenshot needs --frames N");
+        if (checkOutputOption("--screenshot", screenshot) != ImageFormat::Png) {
+            throw UsageError("--screenshot: " + screenshot + ": must be a .png file");
+        }
+    }
 
-    // Read once: the map lights the first scene and stays in the settings for the scenes opened
-    // after it.
-    const Environment environment = render.environment();
-    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), environment));
+    // Decoded once: the map lights the first scene and stays in the settings for the scenes
+    // opened after it.
+    Environment environment;
+    auto scene = std::make_shared<LoadedScene>(render.parseScene(render.readSceneBundle(), &environment));
     const RenderSettings settings = render.renderSettings(scene->scene);
     std::fprintf(stderr, "%s\n%s", describeScene(*scene).c_str(), describeWarnings(*scene).c_str());
-    if (scene->scene.lights().litByDefault()) std::fprintf(stderr, "note: %s\n", kDefaultEnvironmentNote);
+    if (scene->scene.lights().litByDefault()) {
+        std::fprintf(stderr, "note: %s\n", defaultEnvironmentNote(scene->scene.lights()).c_str());
+    }
     std::shared_ptr<const Image> referenceImage;
     if (!reference.empty()) referenceImage = std::make_shared<const Image>(readExr(reference));
 
@@ -73,8 +85,10 @@ void ViewCommand::run() const {
     viewerSettings.targetSeconds = targetSeconds;
     viewerSettings.noiseThreshold = static_cast<float>(settings.adaptive.threshold);
     viewerSettings.resolutionScale = scale;
-    viewerSettings.display.exposure = exposure;
+    viewerSettings.display.exposure = exposure.value_or(0.0f);
     viewerSettings.display.tonemap = *tonemapKind;
+    viewerSettings.autoExposure = !exposure && *tonemapKind != Tonemap::Clamp;
+    viewerSettings.backdrop = backdrop;
 
     viewer::ViewRunOptions run;
     run.headless = !headless.empty();
@@ -83,13 +97,14 @@ void ViewCommand::run() const {
     run.height = window.at(1);
     run.frames = frames;
     if (!screenshot.empty()) run.screenshot = screenshot;
-    // The image size follows the window; --width/--height set the window when given.
+    // The image has the window less the panel beside it; --width/--height set the image instead,
+    // and the window is made that much wider than it.
     if (render.width) {
-        if (*render.width < 1 || *render.width > 65536) throw Error("--width: must be in 1..65536");
-        run.width = *render.width;
+        if (*render.width < 1 || *render.width > 65536) throw UsageError("--width: must be in 1..65536");
+        run.width = *render.width + static_cast<int>(viewer::kPanelWidth);
     }
     if (render.height) {
-        if (*render.height < 1 || *render.height > 65536) throw Error("--height: must be in 1..65536");
+        if (*render.height < 1 || *render.height > 65536) throw UsageError("--height: must be in 1..65536");
         run.height = *render.height;
     }
 
@@ -113,8 +128,10 @@ void ViewCommand::run() const {
     const nlohmann::json out{
         {"scene", scene->scenePath().string()},
         {"context", report.context},
-        {"width", run.width},
+        {"width", run.width},  // the window's
         {"height", run.height},
+        {"image_width", last && !last->sides.empty() ? last->sides[0].image.width : 0},
+        {"image_height", last && !last->sides.empty() ? last->sides[0].image.height : 0},
         {"frames", report.frameSeconds.size()},
         {"frame_ms_p50", 1e3 * viewer::percentile(report.frameSeconds, 50.0)},
         {"frame_ms_p95", 1e3 * viewer::percentile(report.frameSeconds, 95.0)},
@@ -143,18 +160,28 @@ void addViewCommand(CLI::App& app) {
         ->expected(0, 1)
         ->default_str("auto");
     sub->add_option("--frames", command->frames, "Stop after N UI frames (and once a target is reached, if given)");
-    sub->add_option("--screenshot", command->screenshot, "Write the last frame (image + panel) as PNG");
+    sub->add_option("--screenshot", command->screenshot,
+                    "Write the last frame (image + panel) as PNG (.png in any letter case; its folder "
+                    "must exist and be writable)");
     sub->add_option("--reference", command->reference, "Reference EXR: the noise plots show RMSE against it");
-    sub->add_option("--window", command->window, "Window size W H")->expected(2)->capture_default_str();
+    sub->add_option("--window", command->window,
+                    "Window size W H; the image has it less the panel (--width/--height set the image)")
+        ->expected(2)
+        ->capture_default_str();
     sub->add_flag("--split,!--no-split", command->split, "Split view: uniform left, strata24 right");
     sub->add_option("--target-spp", command->targetSpp, "Stop rendering at this spp (0: no limit)")
         ->capture_default_str();
     sub->add_option("--target-seconds", command->targetSeconds, "Stop rendering after this much render time (0: no limit)")
         ->capture_default_str();
-    sub->add_option("--scale", command->scale, "Render resolution as a fraction of the window's")
+    sub->add_option("--scale", command->scale,
+                    "Render resolution as a fraction of the image area (the window less the panel)")
         ->capture_default_str();
-    sub->add_option("--exposure", command->exposure, "Exposure in stops")->capture_default_str();
-    sub->add_option("--tonemap", command->tonemap, "clamp|reinhard|aces")->capture_default_str();
+    sub->add_option("--exposure", command->exposure,
+                    "Exposure in stops (default: auto, middle grey 0.18 for the first image's "
+                    "log-average luminance; 0 with --tonemap clamp)");
+    sub->add_option("--tonemap", command->tonemap,
+                    tonemapNames() + " (aces: ACES filmic, Narkowicz's fit; clamp: linear, cut at 1)")
+        ->capture_default_str();
     sub->add_flag("--json", command->json, "Print frame-time p50/p95 and throughput as JSON on stdout");
     sub->callback([command] { command->run(); });
 }

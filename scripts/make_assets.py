@@ -1,17 +1,25 @@
 #!/usr/bin/env python3
-"""Writes the bundled scenes in assets/ (run from the repository root; output is committed).
+"""Writes the bundled scenes in assets/ and the test scenes in tests/data/ (run from the
+repository root; output is committed).
 
 cornell/  The Cornell box from the published Cornell measurements (units: mm): the room, the
           two blocks, and the 130 x 105 mm ceiling light, lowered 0.8 mm so it does not share
           the ceiling's plane. Albedos are the usual RGB reductions of the measured spectral
           reflectances; the light's Ke is its radiance (17, 12, 4 in the common RGB reduction).
           Camera: the published pinhole (35 mm focal length, 25 mm film => fov_y 39.3077 deg).
+cornell-glass/  The same box with the short block replaced by a glass sphere (illum 7, Ni 1.5,
+          smooth; vertex normals) resting on the floor, and the tall block a mirror (illum 3,
+          Ks 0.95, Pr 0) turned to 45 degrees.
 furnace/  The camera inside a closed icosphere (subdivided icosahedron), every face Kd 0.5 and
           Ke 1 facing inward: the exact answer at depth K is (1 - 0.5^(K+1)) / 0.5.
 glossy/   Three Cook-Torrance spheres (gold metal, red plastic, rough copper) on a glossy dark
           floor before a matte wall, under a tilted softbox and a warm strip light (units: m).
           Ks is the Fresnel F0, Pr the roughness (GGX alpha = Pr^2). The spheres are flat-faceted
           icospheres (the renderer uses geometric normals), fine enough for smooth highlights.
+tests/data/cornell_point/  The Cornell box's room and blocks without the area light, lit by one
+          point light just under the ceiling's centre (in its description, W/sr in mm units): the
+          Cornell light's colour, about the irradiance that light gives the floor below it. A scene
+          whose light has no radiance bound (K_eps) and that only next-event estimation lights.
 Every polygon is written counter-clockwise as seen from the side it faces (its front).
 """
 import json
@@ -79,7 +87,18 @@ def block(top):
     return [facing(f, sub(centroid(f), middle)) for f in faces]  # outward
 
 
-def cornell():
+CORNELL_ALBEDOS = [("white", [("Kd", [0.725, 0.71, 0.68])]),
+                   ("red", [("Kd", [0.63, 0.065, 0.05])]),
+                   ("green", [("Kd", [0.14, 0.45, 0.091])])]
+CORNELL_LIGHT = ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])
+CORNELL_CAMERA = {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
+                  "fov_y": 39.3077, "width": 512, "height": 512}
+SHORT_BLOCK = [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]]
+TALL_BLOCK = [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]]
+
+
+def cornell_room():
+    """The room's walls and its light, as (name, material, polygons) groups."""
     inside = [278.0, 274.4, 279.6]
     room = {
         "floor": [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]],
@@ -91,25 +110,78 @@ def cornell():
     materials = {"floor": "white", "ceiling": "white", "back_wall": "white",
                  "green_wall": "green", "red_wall": "red"}
     groups = [(n, materials[n], [facing(p, sub(inside, centroid(p)))]) for n, p in room.items()]
-    groups.append(("short_block", "white",
-                   block([[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]])))
-    groups.append(("tall_block", "white",
-                   block([[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]])))
     light = [[343, 548.0, 227], [343, 548.0, 332], [213, 548.0, 332], [213, 548.0, 227]]
-    groups.append(("light", "light", [facing(light, [0, -1, 0])]))
+    return groups, ("light", "light", [facing(light, [0, -1, 0])])
+
+
+def cornell():
+    groups, light = cornell_room()
+    groups += cornell_blocks() + [light]
     write_obj("assets/cornell/cornell.obj",
               ["Cornell box after the published Cornell measurements (mm).",
                "Counter-clockwise = front. Kd: Lambertian albedo; Ke: radiance, front side only."],
               groups)
     write_mtl("assets/cornell/cornell.mtl",
               ["Albedos: RGB reductions of the measured reflectance spectra. Light: Ke = radiance."],
-              [("white", [("Kd", [0.725, 0.71, 0.68])]),
-               ("red", [("Kd", [0.63, 0.065, 0.05])]),
-               ("green", [("Kd", [0.14, 0.45, 0.091])]),
-               ("light", [("Kd", [0.78, 0.78, 0.78]), ("Ke", [17, 12, 4])])])
-    write_json("assets/cornell/cornell.json",
-               {"position": [278, 273, -800], "look_at": [278, 273, 0], "up": [0, 1, 0],
-                "fov_y": 39.3077, "width": 512, "height": 512})
+              CORNELL_ALBEDOS + [CORNELL_LIGHT])
+    write_json("assets/cornell/cornell.json", CORNELL_CAMERA)
+
+
+def cornell_blocks():
+    """The short and the tall block, as (name, material, polygons) groups."""
+    return [("short_block", "white", block(SHORT_BLOCK)), ("tall_block", "white", block(TALL_BLOCK))]
+
+
+def cornell_point():
+    # Irradiance under the area light, about Le A / d^2 = 17 * 130 * 105 / 548^2 = 0.77 in red;
+    # the point light gives I / d^2 at d = 540 mm, so I = 13000 * (17, 12, 4) W/sr.
+    os.makedirs("tests/data/cornell_point", exist_ok=True)
+    groups, _ = cornell_room()
+    write_obj("tests/data/cornell_point/cornell_point.obj",
+              ["The Cornell box's room and blocks (mm) without the area light: the point light of",
+               "cornell_point.json lights it. Counter-clockwise = front. Kd: Lambertian albedo."],
+              groups + cornell_blocks())
+    write_mtl("tests/data/cornell_point/cornell_point.mtl",
+              ["Albedos: RGB reductions of the measured reflectance spectra."], CORNELL_ALBEDOS)
+    write_json("tests/data/cornell_point/cornell_point.json",
+               {**CORNELL_CAMERA, "width": 64, "height": 64,
+                "lights": [{"type": "point", "position": [278, 540, 279.6],
+                            "intensity": [221000, 156000, 52000]}]})
+
+
+def cornell_glass():
+    groups, light = cornell_room()
+    # The tall block's footprint turned to 45 degrees from the camera's axis, so that its two
+    # visible faces mirror the red and the green wall rather than the open front.
+    centre = centroid(TALL_BLOCK)
+    half = math.dist(TALL_BLOCK[0], TALL_BLOCK[1]) / 2
+    mirror_top = [[centre[0] + half * math.sqrt(2) * math.cos(a), 330, centre[2] + half * math.sqrt(2) * math.sin(a)]
+                  for a in (0, math.pi / 2, math.pi, 3 * math.pi / 2)]
+    groups.append(("mirror_block", "mirror", block(mirror_top)))
+    groups.append(light)
+    path = "assets/cornell-glass/cornell-glass.obj"
+    write_obj(path, ["The Cornell box with a glass sphere and a mirror block (mm).",
+                     "Counter-clockwise = front; the sphere's vn are its exact normals."], groups)
+    # The sphere where the short block stood, resting on the floor; vertex normals make it smooth.
+    radius = 90.0
+    centre = centroid(SHORT_BLOCK)
+    centre[1] = radius
+    vertices, faces = icosphere(4)
+    first = sum(len(polygon) for _, _, polygons in groups for polygon in polygons)
+    lines = ["o glass_sphere", "usemtl glass"]
+    lines += ["v " + " ".join(f"{centre[i] + radius * v[i]:.6g}" for i in range(3)) for v in vertices]
+    lines += ["vn " + " ".join(f"{c:.6g}" for c in v) for v in vertices]
+    # The icosahedron's faces are counter-clockwise seen from outside: they face out.
+    lines += [f"f {first + a + 1}//{a + 1} {first + b + 1}//{b + 1} {first + c + 1}//{c + 1}"
+              for a, b, c in faces]
+    with open(path, "a") as f:
+        f.write("\n".join(lines) + "\n")
+    write_mtl("assets/cornell-glass/cornell-glass.mtl",
+              ["The Cornell box's albedos and light; glass: a smooth dielectric (illum 7) of index",
+               "Ni, filter Tf; mirror: a perfect mirror (illum 3, Pr 0) of Fresnel F0 = Ks."],
+              CORNELL_ALBEDOS + [CORNELL_LIGHT, ("glass", [("illum", [7]), ("Ni", [1.5]), ("Tf", [1, 1, 1])]),
+                                 ("mirror", [("illum", [3]), ("Ks", [0.95, 0.95, 0.95]), ("Pr", [0])])])
+    write_json("assets/cornell-glass/cornell-glass.json", CORNELL_CAMERA)
 
 
 def icosphere(subdivisions):
@@ -209,5 +281,7 @@ def glossy():
 
 if __name__ == "__main__":
     cornell()
+    cornell_point()
+    cornell_glass()
     furnace()
     glossy()

@@ -2,8 +2,8 @@
 # Installs what Strata needs from Debian 12's packages (when missing) and builds it (Release).
 # Usage: bash scripts/setup.sh [--peers] [BUILD_DIR]   (default: build)
 #   --peers: also what `strata bench` measures against: the renderers `--vs-embree` and
-#            `--vs-cycles` race (embree-tools' pathtracer, blender) and the real models of its
-#            "Real scenes" section (assimp-testmodels); nothing else needs them.
+#            `--vs-cycles` race (embree-tools' pathtracer, blender); without embree-tools the
+#            default-view test skips Embree's Cornell box.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 peers=0
@@ -13,13 +13,14 @@ build_dir=${1:-build}
 packages=(
   cmake g++ ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
-  libopenexr-dev libjpeg-dev libstb-dev doctest-dev
+  libopenexr-dev libjpeg-dev libstb-dev doctest-dev libdraco-dev libmeshoptimizer-dev
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
   python3-glad xvfb xauth gnuplot-nox clang libclang-rt-14-dev
-  dpkg-dev  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB)
+  dpkg-dev lintian  # dpkg-shlibdeps: the .deb's dependencies (cpack -G DEB); lintian checks it
+  assimp-testmodels  # test data: real OBJ and glTF models (tests/app/test_default_view.cpp, the bench)
 )
-if ((peers)); then packages+=(embree-tools blender assimp-testmodels); fi
+if ((peers)); then packages+=(embree-tools blender); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

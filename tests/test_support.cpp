@@ -16,7 +16,15 @@
 namespace strata::test {
 
 std::filesystem::path sourceDir() { return STRATA_SOURCE_DIR; }
-std::filesystem::path sharedDir() { return STRATA_SHARED_DIR; }
+std::filesystem::path testScene(const std::string& name) {
+    return sourceDir() / "tests" / "data" / name / (name + ".obj");
+}
+
+std::optional<std::filesystem::path> sharedDir() {
+    const std::filesystem::path shared = STRATA_SHARED_DIR;
+    if (!std::filesystem::is_directory(shared)) return std::nullopt;
+    return shared;
+}
 
 ScratchDir::~ScratchDir() {
     std::error_code ignored;  // a destructor must not throw; a leftover folder is harmless
@@ -36,6 +44,12 @@ std::string fileBytes(const std::filesystem::path& path) {
     std::ostringstream bytes;
     bytes << in.rdbuf();
     return bytes.str();
+}
+
+std::set<std::string> folderEntries(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    return names;
 }
 
 std::string forgedTga() {
@@ -81,6 +95,12 @@ CommandResult runStrata(const std::string& arguments) {
     return runCommand(std::string(STRATA_BINARY) + " " + arguments);
 }
 
+std::optional<std::string> obeyingPermissions() {
+    if (geteuid() != 0) return "";
+    if (std::system("command -v setpriv >/dev/null 2>&1") != 0) return std::nullopt;
+    return "setpriv --bounding-set=-dac_override,-dac_read_search ";
+}
+
 MeanEstimate estimateMean(const std::vector<double>& values) {
     double sum = 0.0;
     for (double v : values) sum += v;
@@ -105,6 +125,42 @@ void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::
     mesh.triangles.push_back({base, base + 1, base + 2});
     mesh.triangles.push_back({base, base + 2, base + 3});
     mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {material, material});
+    if (!mesh.triangleNormals.empty()) mesh.triangleNormals.insert(mesh.triangleNormals.end(), {kNoNormals, kNoNormals});
+}
+
+void addSphere(MeshData& mesh, const glm::vec3& centre, float radius, int rings, uint32_t material) {
+    const int segments = 2 * rings;
+    const auto first = static_cast<uint32_t>(mesh.positions.size());
+    const auto firstNormal = static_cast<uint32_t>(mesh.normals.size());
+    // Vertex (ring, segment), ring 0 at the +z pole; the seam's segment repeats segment 0.
+    for (int ring = 0; ring <= rings; ++ring) {
+        const double theta = M_PI * ring / rings;
+        for (int segment = 0; segment <= segments; ++segment) {
+            const double phi = 2.0 * M_PI * segment / segments;
+            const glm::vec3 n(static_cast<float>(std::sin(theta) * std::cos(phi)),
+                              static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)));
+            mesh.positions.push_back(centre + radius * n);
+            mesh.normals.push_back(n);
+        }
+    }
+    if (mesh.triangleNormals.size() < mesh.triangles.size()) mesh.triangleNormals.resize(mesh.triangles.size(), kNoNormals);
+    const auto index = [&](int ring, int segment) { return static_cast<uint32_t>(ring * (segments + 1) + segment); };
+    const auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (mesh.positions[first + a] == mesh.positions[first + b] || mesh.positions[first + b] == mesh.positions[first + c] ||
+            mesh.positions[first + a] == mesh.positions[first + c]) {
+            return;  // the poles' degenerate halves
+        }
+        mesh.triangles.push_back({first + a, first + b, first + c});
+        mesh.triangleMaterials.push_back(material);
+        mesh.triangleNormals.push_back({firstNormal + a, firstNormal + b, firstNormal + c});
+    };
+    for (int ring = 0; ring < rings; ++ring) {
+        for (int segment = 0; segment < segments; ++segment) {
+            // Counter-clockwise seen from outside: down the ring, then along increasing phi.
+            add(index(ring, segment), index(ring + 1, segment), index(ring + 1, segment + 1));
+            add(index(ring, segment), index(ring + 1, segment + 1), index(ring, segment + 1));
+        }
+    }
 }
 
 MeshData furnaceMesh(const Material& material) {
@@ -136,6 +192,9 @@ MeshData lambertSquareMesh(const Material& receiver) {
     addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);  // faces +z
     // Counter-clockwise seen from below: its front faces the receiver.
     addQuad(mesh, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1}, 1);
+    // The square is the only light: of radiance 1, no brighter than the default sky, which would
+    // light the scene otherwise (lights/scene_lights.h).
+    mesh.environment.kind = Environment::Kind::None;
     return mesh;
 }
 

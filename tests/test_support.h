@@ -3,6 +3,7 @@
 // the statistics that turn "close enough" into k standard errors.
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -33,7 +34,12 @@ inline constexpr bool kSanitizedBuild = false;
 #endif
 
 std::filesystem::path sourceDir();
-std::filesystem::path sharedDir();
+// The scene the suite keeps in tests/data/NAME/NAME.obj (scripts/make_assets.py writes them).
+std::filesystem::path testScene(const std::string& name);
+// The optional shared collection beside the checkout (../shared), when it is there: a test that
+// reads it says it is skipped without it (MESSAGE) and passes; every scene a test needs is in the
+// repository.
+std::optional<std::filesystem::path> sharedDir();
 // A fresh empty folder for one test's files, removed with everything in it when the test's
 // handle goes out of scope, so runs do not pile up folders in the temp directory. It is a path,
 // so `dir / "file"` and every function taking a path accept it.
@@ -53,6 +59,8 @@ struct CommandResult {
 };
 // The file's bytes; empty when it cannot be read.
 std::string fileBytes(const std::filesystem::path& path);
+// The names of the folder's entries (to check that nothing was left behind in it).
+std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
 // would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
 std::string forgedTga();
@@ -65,6 +73,10 @@ std::set<std::string> includedFolders(const std::string& folder);
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);
+// A command-line prefix under which a child obeys file permissions as other users do: empty for
+// them, for root setpriv dropping the capabilities that override them (CAP_DAC_OVERRIDE,
+// CAP_DAC_READ_SEARCH). Empty optional when root has no setpriv.
+std::optional<std::string> obeyingPermissions();
 
 // Mean and standard error of the mean of a sample.
 struct MeanEstimate {
@@ -82,6 +94,10 @@ double chiSquareCritical(size_t degrees);
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material);
 
+// A UV sphere of `rings` x 2 `rings` quads appended to `mesh` with material `material`, facing
+// out (counter-clockwise seen from outside), with unit vertex normals pointing out.
+void addSphere(MeshData& mesh, const glm::vec3& centre, float radius, int rings, uint32_t material);
+
 // The furnace (notes section 5.1): the cube [-1,1]^3 seen from inside, every face of `material`
 // facing inward. With Kd = rho and Ke = Le the exact radiance at depth K is
 // Le (1 - rho^(K+1)) / (1 - rho).
@@ -92,7 +108,8 @@ double furnaceRadiance(double albedo, double emission, int depth);
 
 // Lambert's polygon case (notes section 5.2): a receiver plane z = 0 of `receiver` (large,
 // facing up) under the unit square [-1/2,1/2]^2 at z = 1, emitting 1 downward (and black).
-// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance.
+// At depth 1 the radiance leaving the origin is rho E / pi with E = kLambertSquareIrradiance. No
+// environment.
 MeshData lambertSquareMesh(const Material& receiver);
 inline constexpr double kLambertSquareIrradiance = 0.752274688454;
 // The ray that sees the origin of the receiver, from `from` (above the plane, below the square).

@@ -14,6 +14,7 @@
 #include "bench/reference_cache.h"
 #include "render_options.h"
 #include "scene/scene_loader.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -104,10 +105,9 @@ void writeRunCsv(const std::filesystem::path& dir, const ConvergenceRun& run) {
                    cell("%.6g", c.rmse), cell("%.6g", c.relMse), cell("%.6g", c.efficiency),
                    std::to_string(c.nonFinite)});
     }
-    writeTextFile(dir / ("convergence-" + run.scene + "-" + run.sampler +
-                         (run.variant.empty() ? "" : "-" + run.variant) + "-d" +
-                         std::to_string(run.depth) + ".csv"),
-                  table.csv());
+    writeFile(dir / ("convergence-" + run.scene + "-" + run.sampler +
+                     (run.variant.empty() ? "" : "-" + run.variant) + "-d" + std::to_string(run.depth) + ".csv"),
+              table.csv());
 }
 
 void plotErrorAgainstTime(const std::filesystem::path& dir, const std::vector<ConvergenceRun>& runs) {

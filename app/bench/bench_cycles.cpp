@@ -21,6 +21,7 @@
 #include "film/image_metrics.h"
 #include "integrator/progressive_renderer.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -135,7 +136,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     const glm::dvec3 referenceMeans = channelMeans(referenceImage);
 
     const auto script = out / "cycles_render.py";
-    writeTextFile(script, std::string(cyclesScript()));
+    writeFile(script, std::string(cyclesScript()));
     std::vector<CyclesRun> cycles;
     for (int spp : cyclesSpp) {
         CyclesJob job;
@@ -151,7 +152,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         job.seed = settings.seed;
         job.out = out / ("vs-cycles-cycles-" + std::to_string(spp) + ".exr");
         const auto parameters = out / ("vs-cycles-cycles-" + std::to_string(spp) + ".json");
-        writeTextFile(parameters, cyclesParameters(job));
+        writeFile(parameters, cyclesParameters(job));
         auto seconds = std::make_shared<std::vector<double>>();
         const auto readSeconds = [seconds](const fs::path& runLog) {
             std::ifstream in(runLog);
@@ -266,11 +267,11 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     }
 
     const Table table = cyclesComparisonTable(rows);
-    writeTextFile(out / "vs-cycles.csv", table.csv());
+    writeFile(out / "vs-cycles.csv", table.csv());
     std::vector<PlotSeries> series;
     for (const auto& [renderer, csv] : cyclesPlotData(rows)) {
         const std::string file = "vs-cycles-series-" + std::to_string(series.size()) + ".csv";
-        writeTextFile(out / file, csv);
+        writeFile(out / file, csv);
         series.push_back({renderer, file});
     }
     const std::string plotTitle = sceneName(settings.scene) + cell(", %dx%d, depth %d, ", settings.width,

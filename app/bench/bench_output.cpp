@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
-#include <fstream>
-#include <unistd.h>
 
 #include "bench/bench_process.h"
-#include "util/error.h"
+#include "io/output_file.h"
 
 namespace strata {
 
@@ -53,22 +51,8 @@ std::string threadsText(int threads) {
     return std::to_string(threads) + (threads == 1 ? " thread" : " threads");
 }
 
-void writeTextFile(const std::filesystem::path& path, const std::string& text) {
-    const auto temporary = path.string() + ".tmp" + std::to_string(getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) {
-            std::filesystem::remove(temporary);
-            throw Error(path.string() + ": cannot write");
-        }
-    }
-    std::filesystem::rename(temporary, path);
-}
-
 bool runGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& script) {
-    writeTextFile(dir / (name + ".gp"), script);
+    writeFile(dir / (name + ".gp"), script);
     const auto log = dir / (name + ".gp.log");
     if (!runTimed({"gnuplot", name + ".gp"}, log, dir).ok()) {
         std::fprintf(stderr, "note: gnuplot failed on %s/%s.gp (see %s; install gnuplot-nox); no plot\n",

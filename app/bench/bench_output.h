@@ -1,6 +1,6 @@
 #pragma once
-// Files of `strata bench`: CSV tables and gnuplot plots in the output folder. Every file is
-// written to a temporary name and renamed when complete (as image_io does for images).
+// Files of `strata bench`: CSV tables and gnuplot plots in the output folder, each written
+// through an OutputFile (io/output_file.h).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,9 +22,6 @@ std::string cell(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 // "1 thread", "2 threads", ...: how many threads a measurement ran on, for titles and labels.
 std::string threadsText(int threads);
-
-// Writes `text` to `path` through a temporary file; throws strata::Error naming the file.
-void writeTextFile(const std::filesystem::path& path, const std::string& text);
 
 // Runs gnuplot on `script` (written as DIR/NAME.gp beside the data it reads) in `dir`, so that
 // the plot's file names are relative to it. Returns false, with a note on stderr, when gnuplot is

@@ -12,6 +12,7 @@
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -133,7 +134,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
     table.add({"embree pathtracer", cell("%.3f", embree.medianWall()), cell("%.3f", paths / embree.medianWall() * 1e-6),
                cell("%.3f", embree.medianCpu()), cell("%.3f", paths / embree.medianCpu() * 1e-6), "-",
                cell("%.4f", ppmMean(embreeImage))});
-    writeTextFile(settings.outDir / "peer.csv", table.csv());
+    writeFile(settings.outDir / "peer.csv", table.csv());
     return "\n### Against Embree's tutorial path tracer (" + settings.scene.string() + ")\n\n" +
            cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %s, whole-process "
                 "wall time including loading and BVH build, runs alternated.\n\n",

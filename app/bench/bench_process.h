@@ -16,7 +16,8 @@ struct ProcessTiming {
 };
 
 // Runs argv (found on PATH when argv[0] has no slash) in `directory` (empty: this process's),
-// its stdout and stderr into `log`.
+// its stdout and stderr into `log` (written through an OutputFile: throws strata::Error when it
+// cannot be).
 ProcessTiming runTimed(std::vector<std::string> argv, const std::filesystem::path& log,
                        const std::filesystem::path& directory = {});
 

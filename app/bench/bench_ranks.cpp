@@ -8,6 +8,7 @@
 #include "bench/bench_output.h"
 #include "bench/bench_race.h"
 #include "bench/strata_child.h"
+#include "io/output_file.h"
 
 namespace strata {
 
@@ -55,7 +56,7 @@ std::string runRankComparison([[maybe_unused]] const RankSettings& settings) {
         table.add({v.name, cell("%.3f", wall), cell("%.3f", paths / wall * 1e-6), cell("%.3f", v.medianCpu()),
                    cell("%.3f", wall / single)});
     }
-    writeTextFile(settings.outDir / "ranks.csv", table.csv());
+    writeFile(settings.outDir / "ranks.csv", table.csv());
     return title +
            cell("%s, %dx%d, %d spp, depth %d, strata24; whole processes including start-up, "
                 "loading, BVH build, reduction and writing.\n\n",

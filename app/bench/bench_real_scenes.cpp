@@ -9,6 +9,7 @@
 #include "bench/render_rate.h"
 #include "bench/strata_child.h"
 #include "scene/scene_format.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -121,7 +122,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
                    cell("%.3f", rate.mpathsPerCpuSecond()),
                    cell("%.3f", rate.mpathsPerCpuSecond() / baselineRate), cell("%.1f", peakKiB / 1024.0)});
     }
-    writeTextFile(settings.outDir / "real-scenes.csv", table.csv());
+    writeFile(settings.outDir / "real-scenes.csv", table.csv());
     // cell() formats at most 255 characters: the note is put together from short pieces.
     return kTitle +
            cell("%dx%d, depth %d, strata24, %s. ", settings.width, settings.height, settings.depth,

@@ -22,6 +22,7 @@
 #include "scene/scene_loader.h"
 #include "sampling/strata24.h"
 #include "sampling/stratum_schedule.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -156,7 +157,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
                    cell("%.3f", rate.mpathsPerCpuSecond()), cell("%.3f", rate.mraysPerCpuSecond()),
                    cell("%.2f", double(rate.rays) / rate.paths)});
     }
-    writeTextFile(settings.outDir / "throughput-pathtracer.csv", rates.csv());
+    writeFile(settings.outDir / "throughput-pathtracer.csv", rates.csv());
     const double speedRatio = strata.mpathsPerCpuSecond() / uniform.mpathsPerCpuSecond();
     advance();
 
@@ -177,8 +178,8 @@ std::string runThroughput(const ThroughputSettings& settings) {
                      cell("%.1f%%", 100.0 * strata.mraysPerCpuSecond() / mrays)});
         bars += cell("\"%s (random rays)\" %.3f\n", std::string(rayQueryName(query)).c_str(), mrays);
     }
-    writeTextFile(settings.outDir / "throughput-ceiling.csv", ceiling.csv());
-    writeTextFile(settings.outDir / "throughput-bars.dat", bars);
+    writeFile(settings.outDir / "throughput-ceiling.csv", ceiling.csv());
+    writeFile(settings.outDir / "throughput-bars.dat", bars);
     runGnuplot(settings.outDir, "throughput-bars",
                "set terminal pngcairo noenhanced size 800,440 font ',10'\nset output 'throughput-bars.png'\n"
                "set rmargin 20\n"
@@ -204,7 +205,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
                      cell("%.0f%%", 100.0 * r.mpathsPerSecond() / oneThread / t),
                      cell("%.3f", r.mpathsPerCpuSecond())});
     }
-    writeTextFile(settings.outDir / "throughput-threads.csv", scaling.csv());
+    writeFile(settings.outDir / "throughput-threads.csv", scaling.csv());
     advance();
 
     // 4. Cost against resolution.
@@ -218,7 +219,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
                         cell("%.4f", r.seconds / timedPasses), cell("%.1f", r.cpuSeconds * 1e9 / r.paths),
                         cell("%.3f", r.mpathsPerSecond())});
     }
-    writeTextFile(settings.outDir / "throughput-resolution.csv", resolution.csv());
+    writeFile(settings.outDir / "throughput-resolution.csv", resolution.csv());
     advance();
 
     // 5. Cost against triangle count (synthetic scene).
@@ -242,8 +243,8 @@ std::string runThroughput(const ThroughputSettings& settings) {
                        cell("%.1f%%", 100.0 * r.mraysPerCpuSecond() / ceilingRate)});
         triangleData += cell("%zu %.4f %.4f\n", scene.summary().triangles, r.mraysPerCpuSecond(), ceilingRate);
     }
-    writeTextFile(settings.outDir / "throughput-triangles.csv", triangles.csv());
-    writeTextFile(settings.outDir / "throughput-triangles.dat", triangleData);
+    writeFile(settings.outDir / "throughput-triangles.csv", triangles.csv());
+    writeFile(settings.outDir / "throughput-triangles.dat", triangleData);
     runGnuplot(settings.outDir, "throughput-triangles",
                "set terminal pngcairo noenhanced size 640,400 font ',10'\nset output 'throughput-triangles.png'\n"
                "set logscale x\nset grid\nset yrange [0:*]\nset key bottom left\n"
@@ -282,7 +283,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
     sampler.add({"sampleUniformHemisphere", cell("%.2f", nsUniform)});
     sampler.add({"sampleStratum", cell("%.2f", nsStratum)});
     sampler.add({"PathSchedule (per 5-bounce path) + sampleStratum", cell("%.2f", nsScheduled)});
-    writeTextFile(settings.outDir / "sampler-microbench.csv", sampler.csv());
+    writeFile(settings.outDir / "sampler-microbench.csv", sampler.csv());
     advance();
     progress.finish(stage, 0);
 

@@ -8,6 +8,7 @@
 #include "bench/bench_output.h"
 #include "bench/bench_race.h"
 #include "bench/strata_child.h"
+#include "io/output_file.h"
 
 namespace strata {
 namespace {
@@ -53,9 +54,11 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     batch.height = settings.height;
     const std::string spp = std::to_string(settings.spp);
     // One frame, then on to the target: the viewer draws its panel at its own frame rate meanwhile.
+    // --width/--height give the viewer's image the batch render's size (its window is the panel
+    // wider): the same paths.
     const auto view = strataCommandLine(
         "view", options,
-        {"--headless", "--no-split", "--target-spp", spp, "--window", std::to_string(settings.width),
+        {"--headless", "--no-split", "--target-spp", spp, "--width", std::to_string(settings.width), "--height",
          std::to_string(settings.height), "--frames", "1", "--json"});
     // The default split view: uniform | strata24, both at the options' depth.
     const auto splitView = strataCommandLine(
@@ -83,7 +86,7 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
     table.add({"strata view with its panel (" + viewReports.context + ")", cell("%.3f", viewSeconds),
                cell("%.3f", paths / viewSeconds * 1e-6), cell("%.1f", median(viewReports.p50)),
                cell("%.1f", median(viewReports.p95))});
-    writeTextFile(settings.outDir / "viewer.csv", table.csv());
+    writeFile(settings.outDir / "viewer.csv", table.csv());
     return kTitle +
            cell("%s, %dx%d, %d spp, depth %d, the default sampler (%s) and transport, %s; whole "
                 "processes including start-up and loading, runs alternated.\n\n",

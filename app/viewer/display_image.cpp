@@ -30,4 +30,13 @@ DisplayImage DisplayImage::fromBuffer(const AccumulationBuffer& buffer, bool str
     return image;
 }
 
+Image DisplayImage::radiance() const {
+    Image image{width, height, {}};
+    image.pixels.resize(static_cast<size_t>(width) * height);
+    for (size_t p = 0; p < image.pixels.size(); ++p) {
+        image.pixels[p] = glm::vec3(meanAndCount[4 * p], meanAndCount[4 * p + 1], meanAndCount[4 * p + 2]);
+    }
+    return image;
+}
+
 }  // namespace strata::viewer

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/image_io.h"
+
 namespace strata {
 class AccumulationBuffer;
 }
@@ -24,6 +26,8 @@ struct DisplayImage {
     // variance. `done`: adaptive sampling's mask (AdaptiveSampling::doneMask), if it is on.
     static DisplayImage fromBuffer(const AccumulationBuffer& buffer, bool stratified,
                                    const std::vector<uint8_t>* done = nullptr);
+    // The mean radiance as an image (what the Files tab saves as EXR).
+    Image radiance() const;
 };
 
 // The standard error of the mean luminance of one pixel with the estimator that fits the sampler:

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "display_image.h"
+#include "frame_target.h"
 #include "gl_loader.h"
 #include "io/tonemap.h"
 
@@ -13,20 +14,13 @@ enum class DisplayView { Colour, RelativeError, SampleCount, AdaptiveMask };
 
 struct DisplaySettings {
     DisplayView view = DisplayView::Colour;
-    Tonemap tonemap = Tonemap::Clamp;
+    Tonemap tonemap = kDefaultTonemap;
     float exposure = 0.0f;     // stops
     bool split = false;        // left of `divider` side 0, right of it side 1
     float divider = 0.5f;      // fraction of the viewport width
     float errorScale = 0.25f;  // relative error at the top of the false-colour ramp
     float sampleScale = 1.0f;  // sample count at the top of the ramp
     bool operator==(const DisplaySettings&) const = default;
-};
-
-struct Viewport {
-    int x = 0;  // lower-left corner, window pixels (OpenGL convention)
-    int y = 0;
-    int width = 0;
-    int height = 0;
 };
 
 class DisplayPipeline {

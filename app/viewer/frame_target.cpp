@@ -43,11 +43,11 @@ void FrameTarget::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
-void FrameTarget::blitTo(const FrameTarget& target) const {
+void FrameTarget::blitTo(const FrameTarget& target, const Viewport& area) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, target.width_, target.height_, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+    glBlitFramebuffer(0, 0, width_, height_, area.x, area.y, area.x + area.width, area.y + area.height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
     target.bind();
 }
 

@@ -9,6 +9,13 @@
 
 namespace strata::viewer {
 
+struct Viewport {
+    int x = 0;  // lower-left corner, window pixels (OpenGL convention)
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+
 class FrameTarget {
 public:
     // The default framebuffer of the current (windowed) context.
@@ -21,8 +28,9 @@ public:
     FrameTarget(const FrameTarget&) = delete;
 
     void bind() const;
-    // Copies this target's pixels over all of `target` (nearest: scaling up keeps pixels crisp).
-    void blitTo(const FrameTarget& target) const;
+    // Copies this target's pixels over `area` of `target` (nearest: scaling up keeps pixels
+    // crisp), and binds `target`.
+    void blitTo(const FrameTarget& target, const Viewport& area) const;
     void resize(int width, int height);  // default framebuffer only: follows the window
     int width() const { return width_; }
     int height() const { return height_; }

@@ -137,7 +137,7 @@ OffscreenBackend parseOffscreenBackend(std::string_view name) {
     if (name.empty() || name == "auto") return OffscreenBackend::Auto;
     if (name == "egl") return OffscreenBackend::Egl;
     if (name == "osmesa") return OffscreenBackend::OsMesa;
-    throw Error("--headless: unknown backend '" + std::string(name) + "' (use egl|osmesa)");
+    throw UsageError("--headless: unknown backend '" + std::string(name) + "' (use egl|osmesa)");
 }
 
 std::unique_ptr<OffscreenContext> OffscreenContext::create(OffscreenBackend backend) {

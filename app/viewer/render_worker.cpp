@@ -19,8 +19,6 @@ using Clock = std::chrono::steady_clock;
 // 50-64 ms.
 constexpr double kBandSeconds = 0.25;
 constexpr int kMinBandRows = 16;  // the renderer's tile height: thinner bands waste its threads
-// Nice value of the render threads: the UI thread stays responsive with every core rendering.
-constexpr int kRenderNiceness = 5;
 // Bands of a job's first step, whose cost is not known yet: its first image comes sooner.
 constexpr int kFirstStepBands = 4;
 // Steps one at a time cost throughput: a snapshot for every step (built here, uploaded and drawn
@@ -34,7 +32,7 @@ constexpr double kStepGroupSeconds = 2.0;
 
 bool samePose(const CameraPose& a, const CameraPose& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
-           a.fovYDegrees == b.fovYDegrees;
+           a.fovYDegrees == b.fovYDegrees && a.orthographicHalfHeight == b.orthographicHalfHeight;
 }
 
 double secondsSince(Clock::time_point start) {
@@ -60,7 +58,7 @@ bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
            a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
            a.seed != b.seed ||
            a.threads != b.threads || a.preview != b.preview || a.reference != b.reference ||
-           a.noiseThreshold != b.noiseThreshold;
+           a.noiseThreshold != b.noiseThreshold || a.backdrop != b.backdrop;
 }
 
 RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side) {
@@ -72,9 +70,10 @@ RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side
     settings.seed = config.seed;
     settings.threads = config.threads;
     // Render threads yield to the UI thread (and llvmpipe's) on a small machine.
-    settings.niceness = kRenderNiceness;
+    settings.niceness = kWorkerNiceness;
     // The preview's single path per pixel is no estimate to judge pixels by.
     settings.adaptive.threshold = config.preview ? 0.0 : config.noiseThreshold;
+    settings.backdrop = config.backdrop;
     return settings;
 }
 
@@ -127,13 +126,18 @@ struct RenderWorker::Job {
     }
     // A point of the side's error curve: RMSE against the reference as film/image_metrics.h
     // defines it (the bench's measure), else the root mean square over pixels of the estimated
-    // standard error of the mean luminance.
+    // standard error of the mean luminance, from the spread of the pass means for every sampler.
+    // No spread within one render is its error: a pixel's samples are stratified over all its
+    // paths (path_samples.h), so both spreads overstate it, the per-sample one by more and by
+    // more where a pixel's footprint varies more. Measured alike, the two sides' ratio is the
+    // one independent renders show (test_render_worker.cpp); each side's own spread (uniform's
+    // per sample, strata24's per pass) put uniform's error 2-3 times too high against strata24's.
     double curveError(const Side& side) const {
         const AccumulationBuffer& buffer = side.session.buffer();
         if (againstReference()) return imageError(buffer.meanImage(), *reference).rmse;
         double squares = 0.0;
         for (size_t p = 0; p < buffer.pixelCount(); ++p) {
-            const double e = pixelStandardError(buffer, p, side.stratified);
+            const double e = buffer.passStandardError(p);
             squares += e * e;
         }
         return std::sqrt(squares / static_cast<double>(buffer.pixelCount()));

@@ -49,6 +49,7 @@ struct WorkerConfig {
     // Adaptive sampling (renderer/film/adaptive_sampling.h): a pixel whose relative standard error is
     // at most this receives no more passes; 0: off.
     double noiseThreshold = 0.0;
+    BackdropSetting backdrop;
     // These three never restart accumulation.
     uint32_t targetSpp = 0;      // 0: no limit
     double targetSeconds = 0.0;  // render time (all sides), 0: no limit
@@ -56,6 +57,10 @@ struct WorkerConfig {
 };
 
 inline constexpr int kPreviewDivisor = 4;
+
+// Nice value of the viewer's render threads and of its loading threads: the UI thread stays
+// responsive with every core rendering or loading.
+inline constexpr int kWorkerNiceness = 5;
 
 // Whether going from `a` to `b` restarts accumulation (anything but the targets / paused changed).
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b);

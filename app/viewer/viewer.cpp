@@ -7,7 +7,9 @@
 #include <imgui_impl_opengl3.h>
 
 #include "util/error.h"
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
+#include "scene/scene_format.h"
 
 namespace strata::viewer {
 namespace {
@@ -52,40 +54,73 @@ Viewer::Viewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& setting
 }
 
 void Viewer::openScene(const std::filesystem::path& path) {
-    if (path.extension() == ".exr") {
+    if (lowerCaseExtension(path) == ".exr") {
         openEnvironmentMap(path);
         return;
     }
-    try {
-        LoadedScene loaded = parseScene(readSceneBundle(path), settings_.traversal, settings_.budget);
-        if (settings_.environment.kind != Environment::Kind::Default) loaded.scene.setEnvironment(settings_.environment);
-        scene_ = std::make_shared<LoadedScene>(std::move(loaded));
-        camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
-        panel_.setScenePath(path.string());
-        panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
-        const size_t warnings = scene_->report.warnings.size();
-        std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
-        panel_.setMessage("opened " + path.string() +
-                          (warnings ? " (warnings on stderr: " + std::to_string(warnings) + ")" : ""));
-    } catch (const std::exception& e) {
-        panel_.setMessage(std::string("cannot open scene: ") + e.what());
-    }
+    sceneLoader_.start({LoadRequest::Kind::Scene, path, settings_.traversal, settings_.budget});
 }
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
-    try {
-        const EnvironmentMapFile file = readEnvironmentMap(exrPath, TextureBudget(settings_.budget.textureBytes));
-        settings_.environment.kind = Environment::Kind::Map;
-        settings_.environment.map = file.map;
-        relight();
-        panel_.setEnvironmentMapPath(exrPath.string());
-        panel_.setMessage("environment " + exrPath.string() +
-                          (file.zeroedNegatives ? " (" + std::to_string(file.zeroedNegatives) +
-                                                      " slightly negative texel components read as 0)"
-                                                : ""));
-    } catch (const std::exception& e) {
-        panel_.setMessage(std::string("cannot use environment map: ") + e.what());
+    mapLoader_.start({LoadRequest::Kind::EnvironmentMap, exrPath, settings_.traversal, settings_.budget});
+}
+
+void Viewer::setWakeCallback(const std::function<void()>& onWake) {
+    worker_.setPublishCallback(onWake);
+    sceneLoader_.setNotifyCallback(onWake);
+    mapLoader_.setNotifyCallback(onWake);
+}
+
+std::optional<LoadProgress> Viewer::currentLoad() const {
+    if (auto scene = sceneLoader_.progress()) return scene;
+    return mapLoader_.progress();
+}
+
+void Viewer::finishLoad(LoadOutcome outcome) {
+    const bool scene = outcome.request.kind == LoadRequest::Kind::Scene;
+    const std::string path = outcome.request.path.string();
+    if (outcome.cancelled) {
+        panel_.setMessage("cancelled loading " + path +
+                          (scene ? "; the open scene stays" : "; the environment stays"));
+    } else if (!outcome.error.empty()) {
+        panel_.setMessage((scene ? "cannot open scene: " : "cannot use environment map: ") + outcome.error);
+    } else if (scene) {
+        showScene(std::move(outcome.scene), outcome.seconds);
+    } else {
+        useEnvironmentMap(*outcome.map, outcome.request.path);
     }
+}
+
+void Viewer::showScene(std::shared_ptr<LoadedScene> scene, double seconds) {
+    // Here, before the render worker sees the scene: whatever the environment is now, also when
+    // it changed while the scene loaded.
+    if (settings_.environment.kind != Environment::Kind::Default) {
+        scene->scene.setEnvironment(settings_.environment);
+    }
+    scene_ = std::move(scene);
+    camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
+    const std::string path = scene_->scenePath().string();
+    panel_.setScenePath(path);
+    panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
+    // The loader's note on how it read these files, when it has one to give, goes here.
+    panel_.setSceneNote({});
+    const size_t warnings = scene_->report.warnings.size();
+    std::fprintf(stderr, "%s", describeWarnings(*scene_).c_str());
+    char time[32];
+    std::snprintf(time, sizeof time, " in %.2f s", seconds);
+    panel_.setMessage("opened " + path + time +
+                      (warnings ? " (warnings on stderr: " + std::to_string(warnings) + ")" : ""));
+}
+
+void Viewer::useEnvironmentMap(const EnvironmentMapFile& file, const std::filesystem::path& exrPath) {
+    settings_.environment.kind = Environment::Kind::Map;
+    settings_.environment.map = file.map;
+    relight();
+    panel_.setEnvironmentMapPath(exrPath.string());
+    panel_.setMessage("environment " + exrPath.string() +
+                      (file.zeroedNegatives ? " (" + std::to_string(file.zeroedNegatives) +
+                                                  " slightly negative texel components read as 0)"
+                                            : ""));
 }
 
 void Viewer::relight() {
@@ -105,19 +140,20 @@ void Viewer::loadReference(const std::filesystem::path& exrPath) {
     }
 }
 
-void Viewer::handleDivider(const ImGuiIO& io, const FrameTarget& target) {
+void Viewer::handleDivider(const ImGuiIO& io) {
     if (!settings_.split) {
         draggingDivider_ = false;
         return;
     }
-    const float dividerX = settings_.display.divider * static_cast<float>(target.width());
+    const float left = static_cast<float>(imageArea_.x), width = static_cast<float>(imageArea_.width);
+    const float dividerX = left + settings_.display.divider * width;
     if (!io.WantCaptureMouse && ImGui::IsMouseClicked(0) &&
         std::abs(io.MousePos.x - dividerX) <= kDividerGrabPixels) {
         draggingDivider_ = true;
     }
     if (!io.MouseDown[0]) draggingDivider_ = false;
     if (draggingDivider_) {
-        settings_.display.divider = std::clamp(io.MousePos.x / static_cast<float>(target.width()), 0.0f, 1.0f);
+        settings_.display.divider = std::clamp((io.MousePos.x - left) / std::max(width, 1.0f), 0.0f, 1.0f);
     }
     if (!io.WantCaptureMouse && std::abs(io.MousePos.x - dividerX) <= kDividerGrabPixels) {
         ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
@@ -130,9 +166,17 @@ void Viewer::frame(const FrameTarget& target) {
     const ImGuiIO& io = ImGui::GetIO();
 
     if (auto latest = worker_.latest(); latest && latest != shown_) shown_ = std::move(latest);
+    for (LoadWorker* loader : {&sceneLoader_, &mapLoader_}) {
+        if (auto outcome = loader->take()) finishLoad(std::move(*outcome));
+    }
+    meterExposure();
 
-    const PanelActions actions = panel_.draw(settings_, shown_.get(), scene_->scene);
-    handleDivider(io, target);
+    const PanelActions actions = panel_.draw(settings_, shown_.get(), scene_->scene, currentLoad());
+    // The image has the window right of the panel, and the render its size: nothing of it is
+    // hidden under a control.
+    const int panelWidth = static_cast<int>(std::ceil(panel_.width(static_cast<float>(target.width()))));
+    imageArea_ = Viewport{panelWidth, 0, std::max(1, target.width() - panelWidth), target.height()};
+    handleDivider(io);
     const auto now = std::chrono::steady_clock::now();
     if (camera_.update(io, !io.WantCaptureMouse && !draggingDivider_, !io.WantCaptureKeyboard)) lastMotion_ = now;
     // A relight previews like a camera motion, so that dragging the rotation or intensity is fluid.
@@ -142,8 +186,8 @@ void Viewer::frame(const FrameTarget& target) {
     WorkerConfig config;
     config.scene = scene_;
     config.pose = camera_.pose();
-    config.width = std::max(1, static_cast<int>(std::lround(target.width() * settings_.resolutionScale)));
-    config.height = std::max(1, static_cast<int>(std::lround(target.height() * settings_.resolutionScale)));
+    config.width = std::max(1, static_cast<int>(std::lround(imageArea_.width * settings_.resolutionScale)));
+    config.height = std::max(1, static_cast<int>(std::lround(imageArea_.height * settings_.resolutionScale)));
     config.sides = settings_.sides();
     config.nextEventEstimation = settings_.nextEventEstimation;
     config.rouletteDepth = settings_.rouletteDepth;
@@ -152,6 +196,7 @@ void Viewer::frame(const FrameTarget& target) {
     config.preview = now - lastMotion_ < kSettleTime;
     config.reference = reference_;
     config.noiseThreshold = settings_.noiseThreshold;
+    config.backdrop = settings_.backdrop;
     config.targetSpp = static_cast<uint32_t>(settings_.targetSpp);
     config.targetSeconds = settings_.targetSeconds;
     config.paused = settings_.paused;
@@ -169,15 +214,28 @@ void Viewer::frame(const FrameTarget& target) {
     display.sampleScale = std::max(1.0f, shown_ ? static_cast<float>(shown_->spp) : 1.0f);
     updateImage(display);
     if (image_) {
-        image_->blitTo(target);  // covers the whole target: no clear needed (a full-screen pass saved)
+        // Covers the image area, and the panel's opaque window the rest: no clear needed (a
+        // full-window pass saved).
+        image_->blitTo(target, imageArea_);
     } else {
         target.bind();
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
     }
-    drawOverlays(target);
+    drawOverlays();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Viewer::meterExposure() {
+    if (!settings_.autoExposure || metered_ || !shown_ || shown_->preview || shown_->sides.empty()) return;
+    const DisplayImage& image = shown_->sides[0].image;
+    // Whole: every pixel has its first path (a snapshot between bands has rows without).
+    for (size_t p = 3; p < image.meanAndCount.size(); p += 4) {
+        if (image.meanAndCount[p] == 0.0f) return;
+    }
+    settings_.display.exposure = autoExposure(image.radiance());
+    metered_ = true;
 }
 
 void Viewer::updateImage(const DisplaySettings& display) {
@@ -200,11 +258,12 @@ void Viewer::updateImage(const DisplaySettings& display) {
     imageSettings_ = display;
 }
 
-void Viewer::drawOverlays(const FrameTarget& target) {
+void Viewer::drawOverlays() {
     if (!settings_.split) return;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const float x = settings_.display.divider * static_cast<float>(target.width());
-    const float height = static_cast<float>(target.height());
+    const float x =
+        static_cast<float>(imageArea_.x) + settings_.display.divider * static_cast<float>(imageArea_.width);
+    const float height = static_cast<float>(imageArea_.height);
     draw->AddLine(ImVec2(x, 0), ImVec2(x, height), IM_COL32(255, 255, 255, 220), 2.0f);
     for (int side = 0; side < 2; ++side) {
         const SideSnapshot* snapshot =
@@ -219,6 +278,7 @@ void Viewer::drawOverlays(const FrameTarget& target) {
 }
 
 void Viewer::applyActions(const PanelActions& actions) {
+    if (actions.cancelLoad) (sceneLoader_.progress() ? sceneLoader_ : mapLoader_).cancel();
     if (actions.openScene) openScene(panel_.scenePath());
     if (actions.openEnvironmentMap) openEnvironmentMap(panel_.environmentMapPath());
     if (actions.relight) relight();
@@ -242,13 +302,7 @@ void Viewer::saveExr(const std::filesystem::path& stem) {
     if (!shown_ || shown_->sides.empty()) throw Error("nothing rendered yet");
     std::string written;
     for (size_t side = 0; side < shown_->sides.size(); ++side) {
-        const DisplayImage& display = shown_->sides[side].image;
-        Image image{display.width, display.height, {}};
-        image.pixels.resize(static_cast<size_t>(display.width) * display.height);
-        for (size_t p = 0; p < image.pixels.size(); ++p) {
-            image.pixels[p] = glm::vec3(display.meanAndCount[4 * p], display.meanAndCount[4 * p + 1],
-                                        display.meanAndCount[4 * p + 2]);
-        }
+        const Image image = shown_->sides[side].image.radiance();
         const std::string suffix = shown_->sides.size() == 1 ? "" : (side == 0 ? ".left" : ".right");
         const std::filesystem::path path = stem.string() + suffix + ".exr";
         writeImage(path, image);

@@ -9,6 +9,7 @@
 #include "io/image_io.h"
 #include "integrator/progressive_renderer.h"
 #include "scene/scene.h"
+#include "scene/scene_format.h"
 #include "integrator/truncation.h"
 
 namespace strata::viewer {
@@ -33,6 +34,12 @@ std::string sideLabel(const SideConfig& side) {
     return std::string(samplerName(side.sampler)) + ", K=" + std::to_string(side.depth);
 }
 
+std::vector<std::string> sceneFileExtensions() {
+    std::vector<std::string> extensions;
+    for (std::string_view extension : sceneExtensions()) extensions.emplace_back(extension);
+    return extensions;
+}
+
 }  // namespace
 
 std::vector<SideConfig> ViewerSettings::sides() const {
@@ -40,10 +47,9 @@ std::vector<SideConfig> ViewerSettings::sides() const {
     return {single};
 }
 
-void ViewerPanel::remember(const std::string& name, bool labelled) {
-    Rect rect{ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
-    if (labelled) rect.max.x = rect.min.x + ImGui::CalcItemWidth();
-    controls_[name] = rect;
+float ViewerPanel::width(float displayWidth) const {
+    if (folded_) return std::min(kFoldedPanelWidth, displayWidth);
+    return std::clamp(displayWidth - kMinImageWidth, 0.0f, kPanelWidth);
 }
 
 void ViewerPanel::setSceneReport(std::string summary, std::string warnings) {
@@ -52,7 +58,9 @@ void ViewerPanel::setSceneReport(std::string summary, std::string warnings) {
 }
 
 std::string describeEnvironment(const Scene& scene) {
-    if (scene.lights().litByDefault()) return "default white sky: the scene has no light";
+    if (scene.lights().litByDefault()) {
+        return "default white sky: " + std::string(scene.lights().defaultSkyReason());
+    }
     const Environment& environment = scene.lights().environment();
     char text[320];
     switch (environment.kind) {
@@ -185,6 +193,8 @@ void ViewerPanel::environmentControls(Environment& environment, PanelActions& ac
     ImGui::InputText("map file", environmentMapPath_.data(), environmentMapPath_.size());
     actions.openEnvironmentMap |= ImGui::Button("open map");
     remember("open map", false);
+    ImGui::SameLine();
+    browseButton("browse...", "browse maps", Browsing::EnvironmentMap);
     if (!mapChoices_.empty()) {
         const std::string current = std::filesystem::path(environmentMapPath()).filename().string();
         const bool open = ImGui::BeginCombo("studio lights", current.empty() ? "choose" : current.c_str());
@@ -206,9 +216,32 @@ void ViewerPanel::environmentControls(Environment& environment, PanelActions& ac
     remember("environment rotation");
 }
 
-void ViewerPanel::statusLines(const WorkerSnapshot* snapshot, const Scene& scene) {
+void ViewerPanel::loadLine(const std::optional<LoadProgress>& loading, PanelActions& actions) {
+    if (!loading) {
+        browseButton("open scene...", "open scene...", Browsing::Scene);
+        ImGui::SameLine();
+        ImGui::TextDisabled("or drop a file on the window");
+        return;
+    }
+    actions.cancelLoad = ImGui::SmallButton("cancel");
+    remember("cancel load", false);
+    ImGui::SameLine();
+    const std::string name = loading->request.path.filename().string();
+    ImGui::TextColored(ImVec4(0.6f, 0.85f, 1, 1), "%s %s: %s %.1f s", loading->cancelling ? "cancelling" : "loading",
+                       name.c_str(), loading->stage, loading->seconds);
+}
+
+void ViewerPanel::statusLines(const WorkerSnapshot* snapshot, const Scene& scene,
+                              const std::optional<LoadProgress>& loading, PanelActions& actions) {
     readouts(snapshot);
+    loadLine(loading, actions);
     ImGui::TextWrapped("%s", sceneSummary_.c_str());
+    if (!sceneNote_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.85f, 1, 1));
+        ImGui::TextWrapped("%s", sceneNote_.c_str());
+        ImGui::PopStyleColor();
+        remember("scene note", false);
+    }
     if (!sceneWarnings_.empty()) {
         const auto count = std::count(sceneWarnings_.begin(), sceneWarnings_.end(), '\n');
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.2f, 1));
@@ -222,6 +255,9 @@ void ViewerPanel::statusLines(const WorkerSnapshot* snapshot, const Scene& scene
     }
     // Two lines kept for it, so that a relight (dragging the rotation) moves no control below.
     const float top = ImGui::GetCursorPosY();
+    showLightTab_ |= ImGui::SmallButton("change");
+    remember("change environment", false);
+    ImGui::SameLine();
     ImGui::TextWrapped("environment: %s", describeEnvironment(scene).c_str());
     const float reserved = 2.0f * ImGui::GetTextLineHeightWithSpacing();
     if (ImGui::GetCursorPosY() < top + reserved) ImGui::SetCursorPosY(top + reserved);
@@ -277,11 +313,46 @@ void ViewerPanel::displayControls(DisplaySettings& display) {
     }
 }
 
+void ViewerPanel::browseButton(const char* label, const char* name, Browsing purpose) {
+    if (ImGui::Button((std::string(label) + "##" + name).c_str())) {
+        browsing_ = purpose;
+        switch (purpose) {
+            case Browsing::Scene: dialog_.open("Open a scene", scenePath(), sceneFileExtensions()); break;
+            case Browsing::EnvironmentMap:
+                dialog_.open("Open an environment map", environmentMapPath(), {".exr"});
+                break;
+            case Browsing::Reference: dialog_.open("Load a reference image", referencePath(), {".exr"}); break;
+        }
+    }
+    remember(name, false);
+}
+
+void ViewerPanel::chosen(const std::string& path, PanelActions& actions) {
+    switch (browsing_) {
+        case Browsing::Scene:
+            setScenePath(path);
+            actions.openScene = true;
+            break;
+        case Browsing::EnvironmentMap:
+            setEnvironmentMapPath(path);
+            actions.openEnvironmentMap = true;
+            break;
+        case Browsing::Reference:
+            setReferencePath(path);
+            actions.loadReference = true;
+            break;
+    }
+}
+
 void ViewerPanel::fileControls(PanelActions& actions) {
     ImGui::InputText("scene file", scenePath_.data(), scenePath_.size());
     actions.openScene = ImGui::Button("open scene");
+    ImGui::SameLine();
+    browseButton("browse...", "browse scenes", Browsing::Scene);
     ImGui::InputText("reference .exr", referencePath_.data(), referencePath_.size());
     actions.loadReference = ImGui::Button("load reference");
+    ImGui::SameLine();
+    browseButton("browse...", "browse references", Browsing::Reference);
     ImGui::InputText("save as", outputStem_.data(), outputStem_.size());
     actions.savePng = ImGui::Button("save PNG");
     remember("save PNG", false);
@@ -290,20 +361,46 @@ void ViewerPanel::fileControls(PanelActions& actions) {
     remember("save EXR", false);
 }
 
-PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene) {
+PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene,
+                               const std::optional<LoadProgress>& loading) {
     PanelActions actions;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("Strata");
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width(display.x), display.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.0f);  // beside the image, not over it: nothing to show through
+    constexpr ImGuiWindowFlags kSidePanel = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                            ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                            ImGuiWindowFlags_NoSavedSettings |
+                                            ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (folded_) {
+        // Only the strip's button: the window's padding would leave it no room.
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 8));
+        ImGui::Begin("Strata", nullptr, kSidePanel | ImGuiWindowFlags_NoScrollbar);
+        ImGui::PopStyleVar();
+        if (ImGui::ArrowButton("unfold", ImGuiDir_Right)) folded_ = false;
+        remember("unfold panel", false);
+    } else {
+        ImGui::Begin("Strata", nullptr, kSidePanel);
+        if (ImGui::ArrowButton("fold", ImGuiDir_Left)) folded_ = true;
+        remember("fold panel", false);
+        ImGui::SameLine();
+        contents(settings, snapshot, scene, loading, actions);
+    }
+    ImGui::End();
+    if (const auto path = dialog_.draw(controls_)) chosen(path->string(), actions);
+    return actions;
+}
+
+void ViewerPanel::contents(ViewerSettings& settings, const WorkerSnapshot* snapshot, const Scene& scene,
+                           const std::optional<LoadProgress>& loading, PanelActions& actions) {
     ImGui::PushItemWidth(190.0f);
-    statusLines(snapshot, scene);
+    statusLines(snapshot, scene, loading, actions);
 
     // The controls in tabs, each short enough that the status above and the noise plots below
     // stay in view at 720 pixels of height; `remember` names each tab, for the tests' clicks.
     if (ImGui::BeginTabBar("sections")) {
-        const auto tab = [&](const char* name) {
-            const bool open = ImGui::BeginTabItem(name);
+        const auto tab = [&](const char* name, ImGuiTabItemFlags flags = 0) {
+            const bool open = ImGui::BeginTabItem(name, nullptr, flags);
             remember(name, false);
             return open;
         };
@@ -315,7 +412,7 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
             budgetControls(settings, actions);
             ImGui::EndTabItem();
         }
-        if (tab("Light")) {
+        if (tab("Light", std::exchange(showLightTab_, false) ? ImGuiTabItemFlags_SetSelected : 0)) {
             environmentControls(settings.environment, actions);
             ImGui::EndTabItem();
         }
@@ -339,8 +436,6 @@ PanelActions ViewerPanel::draw(ViewerSettings& settings, const WorkerSnapshot* s
         ImGui::TextWrapped("%s", message_.c_str());
     }
     ImGui::PopItemWidth();
-    ImGui::End();
-    return actions;
 }
 
 void ViewerPanel::readouts(const WorkerSnapshot* snapshot) {
@@ -389,7 +484,9 @@ void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSetting
         ImGui::Text("error left / right = %.3f  (variance ratio %.2f)", ratio, ratio * ratio);
     }
     drawErrorPlot("##error_vs_spp", ErrorAxis::Spp, series, 100.0f);
+    remember("error vs spp", false);
     drawErrorPlot("##error_vs_seconds", ErrorAxis::Seconds, series, 100.0f);
+    remember("error vs seconds", false);
 }
 
 }  // namespace strata::viewer

@@ -75,9 +75,10 @@ ViewRunReport loop(Viewer& viewer, const ViewRunOptions& options, FrameTarget& t
         if (last) break;
         if (hadInput()) lastInput = Clock::now();
         const bool quiet = Clock::now() - lastInput >= kIdleAfter;
-        // Rendering done and nobody touching anything: nothing on screen can change until an
-        // event comes (input, or a snapshot from the worker), so block on it: no CPU at rest.
-        if (quiet && resting(viewer.shownSnapshot()) && waitForEvent(std::nullopt)) continue;
+        // Rendering done, nothing loading and nobody touching anything: nothing on screen can
+        // change until an event comes (input, or a snapshot from the worker), so block on it: no
+        // CPU at rest.
+        if (quiet && resting(viewer.shownSnapshot()) && !viewer.loading() && waitForEvent(std::nullopt)) continue;
         // While the render goes on, a quiet window draws at the idle rate, and at once when input
         // or a snapshot comes.
         const auto next = frameStart + (quiet ? idleFrame : activeFrame);
@@ -131,10 +132,10 @@ void beginOffscreenFrame(int width, int height, float deltaSeconds) {
 ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& settings,
                         std::shared_ptr<const Image> reference, const ViewRunOptions& options) {
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384) {
-        throw Error("--window: size must be in 16..16384");
+        throw UsageError("--window: size must be in 16..16384");
     }
     if (options.headless) {
-        if (options.frames <= 0) throw Error("--headless needs --frames N (N > 0)");
+        if (options.frames <= 0) throw UsageError("--headless needs --frames N (N > 0)");
         const auto context = OffscreenContext::create(options.backend);
         FrameTarget target = FrameTarget::offscreen(options.width, options.height);
         ImGuiSession imgui;
@@ -161,8 +162,8 @@ ViewRunReport runViewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings
     ViewRunReport report;
     {
         Viewer viewer(std::move(scene), settings, std::move(reference));
-        // A new render snapshot ends the wait for events below.
-        viewer.setSnapshotCallback([] { glfwPostEmptyEvent(); });
+        // A new render snapshot, or a load's progress, ends the wait for events below.
+        viewer.setWakeCallback([] { glfwPostEmptyEvent(); });
         report = loop(
             viewer, options, target,
             [&](float) {

@@ -16,6 +16,7 @@ AccumulationBuffer::AccumulationBuffer(int width, int height) : width_(width), h
     sum_.resize(n);
     luminanceSquares_.resize(n);
     sampleCount_.resize(n);
+    surfaceSamples_.resize(n);
     dropped_.resize(n);
     openPassLuminance_.resize(n);
     openPassSamples_.resize(n);
@@ -24,7 +25,7 @@ AccumulationBuffer::AccumulationBuffer(int width, int height) : width_(width), h
     passCount_.resize(n);
 }
 
-void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value) {
+void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value, bool onSurface) {
     if (!std::isfinite(value.x) || !std::isfinite(value.y) || !std::isfinite(value.z)) {
         ++dropped_[pixel];
         return;
@@ -34,6 +35,7 @@ void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value) {
     sum_[pixel] += v;
     luminanceSquares_[pixel] += y * y;
     ++sampleCount_[pixel];
+    if (onSurface) ++surfaceSamples_[pixel];
     openPassLuminance_[pixel] += y;
     ++openPassSamples_[pixel];
 }
@@ -52,6 +54,7 @@ void AccumulationBuffer::clear() {
     std::fill(sum_.begin(), sum_.end(), glm::dvec3(0.0));
     std::fill(luminanceSquares_.begin(), luminanceSquares_.end(), 0.0);
     std::fill(sampleCount_.begin(), sampleCount_.end(), 0u);
+    std::fill(surfaceSamples_.begin(), surfaceSamples_.end(), 0u);
     std::fill(dropped_.begin(), dropped_.end(), 0u);
     std::fill(openPassLuminance_.begin(), openPassLuminance_.end(), 0.0);
     std::fill(openPassSamples_.begin(), openPassSamples_.end(), 0u);
@@ -63,6 +66,11 @@ void AccumulationBuffer::clear() {
 glm::dvec3 AccumulationBuffer::mean(size_t pixel) const {
     const uint32_t n = sampleCount_[pixel];
     return n ? sum_[pixel] / static_cast<double>(n) : glm::dvec3(0.0);
+}
+
+double AccumulationBuffer::coverage(size_t pixel) const {
+    const uint32_t n = sampleCount_[pixel];
+    return n ? static_cast<double>(surfaceSamples_[pixel]) / n : 0.0;
 }
 
 namespace {
@@ -96,7 +104,11 @@ glm::dvec3 AccumulationBuffer::imageMean() const {
 Image AccumulationBuffer::meanImage() const {
     Image image{width_, height_, {}};
     image.pixels.resize(pixelCount());
-    for (size_t i = 0; i < pixelCount(); ++i) image.pixels[i] = glm::vec3(mean(i));
+    image.alpha.resize(pixelCount());
+    for (size_t i = 0; i < pixelCount(); ++i) {
+        image.pixels[i] = glm::vec3(mean(i));
+        image.alpha[i] = static_cast<float>(coverage(i));
+    }
     return image;
 }
 
@@ -106,8 +118,8 @@ std::array<std::span<double>, 5> AccumulationBuffer::realArrays() {
             openPassLuminance_, passMeanSum_, passMeanSquares_};
 }
 
-std::array<std::span<uint32_t>, 4> AccumulationBuffer::countArrays() {
-    return {sampleCount_, dropped_, openPassSamples_, passCount_};
+std::array<std::span<uint32_t>, 5> AccumulationBuffer::countArrays() {
+    return {sampleCount_, surfaceSamples_, dropped_, openPassSamples_, passCount_};
 }
 
 }  // namespace strata

@@ -7,11 +7,16 @@
 //   - the spread of per-pass means: right for strata24, whose 24 paths in a pass are not
 //     independent (per-sample variance overstates a stratified estimator's error).
 // A non-finite sample (NaN or Inf) is dropped and counted, never added.
+//
+// It also counts the samples whose camera ray found a surface, so that a pixel's coverage (the
+// share of its camera rays that hit the scene: the EXR's alpha) is known apart from its colour.
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 #include <glm/vec3.hpp>
+
+#include "util/luminance.h"
 
 namespace strata {
 
@@ -21,8 +26,9 @@ class AccumulationBuffer {
 public:
     AccumulationBuffer(int width, int height);
 
-    // Not thread-safe for one pixel; distinct pixels may be written concurrently.
-    void addSample(size_t pixel, const glm::vec3& value);
+    // Not thread-safe for one pixel; distinct pixels may be written concurrently. `onSurface`:
+    // the sample's camera ray found a surface.
+    void addSample(size_t pixel, const glm::vec3& value, bool onSurface = true);
     // Closes the pixel's current pass (its samples since the last call) for the pass statistics.
     void completePass(size_t pixel);
     void clear();
@@ -34,6 +40,8 @@ public:
     glm::dvec3 mean(size_t pixel) const;
     uint32_t sampleCount(size_t pixel) const { return sampleCount_[pixel]; }
     uint32_t completedPasses(size_t pixel) const { return passCount_[pixel]; }
+    // The share of the pixel's samples whose camera ray found a surface; 0 without samples.
+    double coverage(size_t pixel) const;
     // Standard error of the pixel's mean luminance from the per-sample variance (i.i.d. view).
     double sampleStandardError(size_t pixel) const;
     // Standard error of the mean luminance from the spread of completed pass means; 0 with
@@ -52,7 +60,7 @@ public:
     // (app/render_job.cpp). Counts add exactly; the doubles' sum depends on the order of
     // additions, by at most a few ulps relative for non-negative radiance (see render_job.cpp).
     std::array<std::span<double>, 5> realArrays();
-    std::array<std::span<uint32_t>, 4> countArrays();
+    std::array<std::span<uint32_t>, 5> countArrays();
 
 private:
     int width_;
@@ -60,6 +68,7 @@ private:
     std::vector<glm::dvec3> sum_;
     std::vector<double> luminanceSquares_;
     std::vector<uint32_t> sampleCount_;
+    std::vector<uint32_t> surfaceSamples_;  // of those, the ones whose camera ray found a surface
     std::vector<uint32_t> dropped_;
     std::vector<double> openPassLuminance_;  // sum over the current pass's samples
     std::vector<uint32_t> openPassSamples_;
@@ -67,10 +76,5 @@ private:
     std::vector<double> passMeanSquares_;
     std::vector<uint32_t> passCount_;
 };
-
-// Rec. 709 luminance of linear RGB.
-inline double luminance(const glm::dvec3& rgb) {
-    return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
-}
 
 }  // namespace strata

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+
+#include "geometry/rounding.h"
 
 namespace strata {
 namespace {
@@ -17,19 +20,34 @@ float powerHeuristic(float own, float other) {
     return a > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// A shadow ray toward a point on an emitter must stop short of the emitter's own surface: the
-// segment is shortened by this fraction of its length (relative, so independent of scene scale).
+// A shadow ray toward a point on an emitter ends short of the emitter's surface: the segment is
+// shortened by this fraction of its length, and where that does not clear the sampled point's
+// rounding error bound (rounding.h), its end is moved off the surface by that bound first, as its
+// origin is off the receiving surface (pbrt-v4's SpawnRayTo and ShadowEpsilon).
 constexpr float kShadowRayShortening = 1e-4f;
 
+// The origin of a ray leaving `surface` (its normal turned toward the viewer) along `direction`:
+// `reference`, the origin on the viewer's side, unless the ray crosses to the other side.
+glm::vec3 spawnOrigin(const SurfaceHit& surface, const glm::vec3& reference, const glm::vec3& direction) {
+    return glm::dot(direction, surface.normal) < 0.0f ? offsetRayOrigin(surface, direction) : reference;
+}
+
 // Turns the geometric normal toward the viewer direction `toViewer`, and the shading normal onto
-// the geometric normal's side; returns the cosine between the viewer and the geometric normal.
-// When the viewer is below the shading hemisphere although above the surface (vertex normals
-// tilted away from it, seen at a grazing angle), the shading normal gives way to the geometric
-// one: its hemisphere would hold no direction toward the viewer, and the surface would show a
-// black rim. A flat surface's two normals are one, and all but the first test are skipped.
-float orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
+// the geometric normal's side; returns the cosine between the viewer and the geometric normal and
+// whether the viewer is on the surface's front (counter-clockwise) side, which tells a dielectric
+// whether the path enters or leaves it. When the viewer is below the shading hemisphere although
+// above the surface (vertex normals tilted away from it, seen at a grazing angle), the shading
+// normal gives way to the geometric one: its hemisphere would hold no direction toward the
+// viewer, and the surface would show a black rim. A flat surface's two normals are one, and all
+// but the first test are skipped.
+struct ViewerSide {
+    float cosine;
+    bool front;
+};
+ViewerSide orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
     float cosine = glm::dot(surface.normal, toViewer);
-    if (cosine < 0.0f) {
+    const bool front = cosine >= 0.0f;
+    if (!front) {
         surface.normal = -surface.normal;
         surface.shadingNormal = -surface.shadingNormal;
         cosine = -cosine;
@@ -38,7 +56,17 @@ float orientToward(SurfaceHit& surface, const glm::vec3& toViewer) {
         if (glm::dot(surface.shadingNormal, surface.normal) < 0.0f) surface.shadingNormal = -surface.shadingNormal;
         if (!(glm::dot(surface.shadingNormal, toViewer) > 0.0f)) surface.shadingNormal = surface.normal;
     }
-    return cosine;
+    return {cosine, front};
+}
+
+// Whether a world direction leaves the surface on the side its lobe sends light to: a reflection
+// on the viewer's side of the geometric normal (oriented toward the viewer), a transmission on the
+// other. A shading normal can tilt a lobe's direction across the surface itself; such a direction
+// counts, with weight zero. On a flat surface the shading and geometric sides are one.
+bool onLobeSide(const SurfaceHit& surface, const glm::vec3& direction, BsdfFlags lobe) {
+    if (!surface.smooth) return true;
+    const float side = glm::dot(direction, surface.normal);
+    return isTransmission(lobe) ? side < 0.0f : side > 0.0f;
 }
 
 // Russian roulette's survival probability for a path of weight `weight` (the 1/survival of
@@ -64,6 +92,7 @@ float rouletteSurvival(const glm::vec3& weight) {
 PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings& settings)
     : scene_(scene),
       settings_(settings),
+      warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
@@ -88,11 +117,13 @@ glm::vec3 PathIntegrator::radiance(const Ray& ray, const PathSamples& samples, u
 }
 
 void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                              std::span<glm::vec3> radiance, uint64_t& rays) const {
+                              std::span<glm::vec3> radiance, uint64_t& rays,
+                              std::span<bool> onSurface) const {
     for (size_t first = 0; first < cameraRays.size(); first += kBatch) {
         const size_t count = std::min(kBatch, cameraRays.size() - first);
         traceBatch(cameraRays.subspan(first, count), samples.subspan(first, count),
-                   radiance.subspan(first, count), rays);
+                   radiance.subspan(first, count), rays,
+                   onSurface.empty() ? onSurface : onSurface.subspan(first, count));
     }
 }
 
@@ -103,7 +134,8 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
 // bit-identical), most likely from their vec3 returns and the loop state saved around them.
 [[gnu::flatten]] void PathIntegrator::traceBatch(std::span<const Ray> cameraRays,
                                                  std::span<const PathSamples> samples,
-                                                 std::span<glm::vec3> radiance, uint64_t& rays) const {
+                                                 std::span<glm::vec3> radiance, uint64_t& rays,
+                                                 std::span<bool> onSurface) const {
     std::array<PathState, kBatch> paths;
     std::array<size_t, kBatch> live;  // the paths still going, by index into `paths`
     size_t liveCount = cameraRays.size();
@@ -127,6 +159,9 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
         scene_.intersect(std::span(traced.data(), liveCount), std::span(hits.data(), liveCount),
                          bounce == 0 ? Scene::Coherence::Coherent : Scene::Coherence::Incoherent);
         rays += liveCount;
+        if (bounce == 0 && !onSurface.empty()) {
+            for (size_t k = 0; k < liveCount; ++k) onSurface[k] = hits[k].has_value();
+        }
         size_t goingOn = 0;
         size_t shadowCount = 0;
         for (size_t k = 0; k < liveCount; ++k) {
@@ -158,15 +193,17 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     const Ray& ray = path.ray;
     if (!hit) {
         // The path left the scene: what arrives along it comes from the lights at infinity.
-        const LightHit miss{glm::vec3(0.0f), std::numeric_limits<float>::infinity()};
+        const LightHit miss{};
         for (uint32_t light : lights.lightsAtInfinity()) {
             radiance += path.weight * emittedAlong(light, ray.direction, miss, path.previous);
         }
         return false;
     }
+    // Inside an absorbing volume the segment just traced keeps exp(-sigma t) (Beer-Lambert).
+    if (!isBlack(path.absorption)) path.weight *= glm::exp(-path.absorption * hit->t);
     const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
     if (triangle.light >= 0) {
-        const LightHit onLight{triangle.normal, hit->t, {hit->u, hit->v}};
+        const LightHit onLight{triangle.normal, {hit->u, hit->v}};
         radiance += path.weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
                                                onLight, path.previous);
     }
@@ -175,37 +212,55 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // The bounce's random numbers depend on the path, not on the surface: drawn first, their
     // arithmetic overlaps the surface's rather than lengthening the chain from the hit to the
     // next ray (cornell_point, defaults: 5% of the CPU time).
-    const PathSamples::StratumPoint directionU = directionNumbers(settings_.sampler, samples, bounce);
+    const DiffuseSampling diffuseU = diffuseNumbers(settings_.sampler, samples, bounce);
     const glm::vec3 lightU = sampleLights_ ? lightNumbers(samples, bounce) : glm::vec3(0.0f);
 
-    // Reflection is two-sided: the hemisphere is on the side the ray came from.
+    // The frame is turned to the side the ray came from: reflection is two-sided, and a
+    // dielectric is told which of its sides that is.
     SurfaceHit surface = scene_.surface(*hit);
-    if (!(orientToward(surface, -ray.direction) > 0.0f)) return false;  // along the surface: nothing seen
+    const ViewerSide viewer = orientToward(surface, -ray.direction);
+    if (!(viewer.cosine > 0.0f)) return false;  // along the surface: nothing seen
     // The strata, the BSDF's cosines and wo live in the shading frame.
     const Frame frame = Frame::fromNormal(surface.shadingNormal);
     const glm::vec3 wo = frame.toLocal(-ray.direction);
-    const LayeredBsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv);
+    const Bsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv, viewer.front);
+    // Lights are sampled from, and their densities for MIS measured from, the origin that a
+    // reflected ray leaves from rather than the hit point: far from the origin of the coordinates
+    // the two are apart by a margin the scene's size does not bound, and the light sample and the
+    // reflected ray it is weighed against must see the emitters from one point for their MIS
+    // weights to sum to one.
+    const glm::vec3 reference = offsetRayOrigin(surface, surface.normal);
     // Light that reaches the camera after this vertex's reflection counts as bounce + 1
-    // bounces, which the depth allows here.
-    if (sampleLights_) {
-        shadow = lightSample(surface, frame, wo, bsdf, lightU);
+    // bounces, which the depth allows here. A delta lobe reflects nothing a light sample finds.
+    if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
+        shadow = lightSample(surface, reference, frame, wo, bsdf, lightU);
         if (shadow) shadow->contribution = path.weight * shadow->contribution;
     }
-    const SampledDirection sampled = sampleDirection(settings_.sampler, directionU, samples, bounce, bsdf, wo);
-    const glm::vec3 direction = frame.toWorld(sampled.local);
-    // A direction above the shading hemisphere but below the surface itself would leave
-    // through the back: it counts, with weight zero (the path ends). On a flat surface the
-    // two hemispheres are one.
-    if (surface.smooth && !(glm::dot(direction, surface.normal) > 0.0f)) return false;
-    path.weight *= sampled.weight;
+    BsdfNumbers numbers{diffuseU};
+    if (bsdf.readsLobeNumbers()) {
+        numbers.lobePoint = samples.bouncePoint(bounce);
+        numbers.lobeChoice = samples.lobeChoice(bounce);
+    }
+    const std::optional<BsdfSample> sampled = bsdf.sample(wo, numbers);
+    if (!sampled) return false;  // the sample is lost: it counts, with weight zero
+    const glm::vec3 direction = frame.toWorld(sampled->wi);
+    if (!onLobeSide(surface, direction, sampled->flags)) return false;
+    path.weight *= sampled->weight;
     if (isBlack(path.weight)) return false;
     if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
         const float survival = rouletteSurvival(path.weight);
         if (samples.roulette(bounce) >= survival) return false;
         path.weight /= survival;
     }
-    path.previous = PreviousVertex{surface.point, sampled.pdf};
-    path.ray = Ray{offsetRayOrigin(surface, direction), direction};
+    // A transmission through the front enters the volume the surface bounds; through the back it
+    // leaves it (volumes are not nested).
+    if (isTransmission(sampled->flags)) {
+        path.absorption = viewer.front ? scene_.materials().absorption(triangle.material) : glm::vec3(0.0f);
+    }
+    // Emission found after a delta lobe could not have been found by a light sample: it counts
+    // at full weight (directionPdf 0).
+    path.previous = PreviousVertex{reference, isSpecular(sampled->flags) ? 0.0f : sampled->pdf};
+    path.ray = Ray{spawnOrigin(surface, reference, direction), direction};
     return true;
 }
 
@@ -235,29 +290,51 @@ glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) c
 }
 
 std::optional<PathIntegrator::ShadowRay> PathIntegrator::lightSample(
-    const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo, const LayeredBsdf& bsdf,
-    const glm::vec3& u) const {
+    const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame, const glm::vec3& wo,
+    const Bsdf& bsdf, const glm::vec3& u) const {
     const LightChoice choice = scene_.lights().sampler().choose(u.x);
     const Light& light = scene_.lights().light(choice.light);
-    const auto sample = light.sample(surface.point, {u.y, u.z});
+    const auto sample = light.sample(reference, {u.y, u.z});
     if (!sample) return std::nullopt;
-    // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
-    if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return std::nullopt;
     const glm::vec3 wi = frame.toLocal(sample->direction);
-    if (!(wi.z > 0.0f)) return std::nullopt;
+    if (isTransmission(bsdf.flags())) {
+        // Light from either side: the shading and geometric sides of its direction must agree.
+        if (!(glm::dot(sample->direction, surface.normal) * wi.z > 0.0f)) return std::nullopt;
+    } else {
+        // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
+        if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return std::nullopt;
+        if (!(wi.z > 0.0f)) return std::nullopt;
+    }
     const glm::vec3 f = bsdf.evaluate(wo, wi);
     if (isBlack(f)) return std::nullopt;
-    const glm::vec3 origin = offsetRayOrigin(surface, sample->direction);
-    // The origin's offset from the surface is far smaller than the shortening, so the distance
-    // from the surface point serves for the shadow ray too.
-    const float reach = sample->onSurface ? sample->distance * (1.0f - kShadowRayShortening)
-                                          : sample->distance;
-    const Ray ray{origin, sample->direction};
-    if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (wi.z / choice.probability)};
+    const float cosine = std::abs(wi.z);
+    const glm::vec3 origin = spawnOrigin(surface, reference, sample->direction);
+    Ray ray{origin, sample->direction};
+    float reach = sample->distance;
+    if (sample->onSurface) {
+        // The segment shortened ends off the emitter by shortening x distance x cos along its
+        // normal. Where that does not clear the sampled point's rounding error, which grows with
+        // the distance from the origin of the coordinates, the ray runs from one offset point to
+        // the other instead, so that the emitter cannot occlude itself.
+        const float cosLight = -glm::dot(sample->normal, sample->direction);
+        const float clearance = kShadowRayShortening * sample->distance * cosLight;
+        if (clearance > 2.0f * glm::dot(glm::abs(sample->normal), sample->pointError)) {
+            reach *= 1.0f - kShadowRayShortening;
+        } else {
+            const glm::vec3 end =
+                offsetRayOrigin(sample->point, sample->pointError, sample->normal, -sample->direction);
+            const glm::vec3 segment = end - origin;
+            const float length = glm::length(segment);
+            if (!(length > 0.0f)) return std::nullopt;
+            ray.direction = segment / length;
+            reach = length * (1.0f - kShadowRayShortening);
+        }
+    }
+    if (light.isDelta()) return ShadowRay{ray, reach, f * sample->radiance * (cosine / choice.probability)};
     const float lightPdf = choice.probability * sample->pdf;
     const float misWeight =
-        powerHeuristic(lightPdf, directionPdf(settings_.sampler, bsdf, wo, wi));
-    return ShadowRay{ray, reach, f * sample->radiance * (wi.z * misWeight / lightPdf)};
+        powerHeuristic(lightPdf, bsdf.pdf(wo, wi, warp_));
+    return ShadowRay{ray, reach, f * sample->radiance * (cosine * misWeight / lightPdf)};
 }
 
 }  // namespace strata

@@ -27,7 +27,7 @@
 
 #include "geometry/frame.h"
 #include "geometry/ray.h"
-#include "materials/layered_bsdf.h"
+#include "materials/bsdf.h"
 #include "sampling/direction_sampler.h"
 #include "sampling/path_samples.h"
 #include "scene/scene.h"
@@ -46,10 +46,13 @@ struct PathIntegratorSettings {
     int rouletteDepth = -1;
 };
 
-// The programs' defaults (strata render, view and bench) are next-event estimation on and
-// Russian roulette from this bounce on; the settings' own defaults above keep the paper's plain
-// estimator, which the exact tests check.
+// Russian roulette from this bounce on, as the programs do by default.
 inline constexpr int kRouletteDepthDefault = 4;
+
+// The programs' defaults (strata render, view and bench): the flagship sampler, next-event
+// estimation and Russian roulette. The settings' own defaults above keep the paper's plain
+// estimator; the exact tests check both.
+inline constexpr PathIntegratorSettings kProgramDefaults{5, SamplerKind::Strata24Bsdf, true, kRouletteDepthDefault};
 
 // Why every path of this scene carries zero radiance, or nullopt when light can reach the camera:
 // no light at all, or only delta lights that next-event estimation would have to reach.
@@ -63,9 +66,11 @@ public:
     glm::vec3 radiance(const Ray& ray, const PathSamples& samples, uint64_t& rays) const;
     // The same for many paths, each camera ray with its path's samples: radiance[i] is exactly
     // what the one-path call gives path i. The paths are traced together, bounce by bounce, so
-    // that Embree takes each bounce's rays, and then its shadow rays, in packets.
+    // that Embree takes each bounce's rays, and then its shadow rays, in packets. When given,
+    // onSurface[i] tells whether camera ray i found a surface (for the backdrop and the
+    // coverage, film/backdrop.h).
     void radiance(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                  std::span<glm::vec3> radiance, uint64_t& rays) const;
+                  std::span<glm::vec3> radiance, uint64_t& rays, std::span<bool> onSurface = {}) const;
 
     const PathIntegratorSettings& settings() const { return settings_; }
 
@@ -76,13 +81,14 @@ public:
 private:
     // Where the path's previous direction was sampled, for the MIS weight of the light it finds.
     struct PreviousVertex {
-        glm::vec3 point;
+        glm::vec3 point;  // the vertex's light reference point (extend)
         float directionPdf;  // 0: no light sample could have found this direction (camera ray)
     };
     struct PathState {
         Ray ray;           // the ray the path traces next
         glm::vec3 weight;  // product of f_r cos / pdf along the path so far
         PreviousVertex previous;
+        glm::vec3 absorption{0.0f};  // of the volume the ray travels through (0: none)
     };
     // A light sample's shadow ray and what it adds to the path's radiance when nothing blocks it.
     struct ShadowRay {
@@ -93,7 +99,7 @@ private:
 
     // At most kBatch paths, bounce by bounce.
     void traceBatch(std::span<const Ray> cameraRays, std::span<const PathSamples> samples,
-                    std::span<glm::vec3> radiance, uint64_t& rays) const;
+                    std::span<glm::vec3> radiance, uint64_t& rays, std::span<bool> onSurface) const;
     // One bounce of one path that has traced its ray to `hit`: adds the emission found there to
     // `radiance`, asks for a light sample's shadow ray (next-event estimation), and turns the
     // path to its next ray. False when the path ends here.
@@ -105,8 +111,8 @@ private:
     // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
     // (lightNumbers): its shadow ray and the reflected radiance it brings, MIS-weighted against
     // the direction sampler; nullopt when it brings nothing whatever the shadow ray finds.
-    std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const Frame& frame, const glm::vec3& wo,
-                                         const LayeredBsdf& bsdf, const glm::vec3& u) const;
+    std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame,
+                                         const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u) const;
 
     // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
     // point when the scene has more than one light, the point alone for a single light with
@@ -118,6 +124,7 @@ private:
 
     const Scene& scene_;
     PathIntegratorSettings settings_;
+    DiffuseWarp warp_;   // the sampler's, for the density of a light sample's direction (MIS)
     bool sampleLights_;  // next-event estimation on and something to sample
     LightNumbers lightNumbers_;
 };

@@ -1,6 +1,7 @@
 #include "integrator/progressive_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -85,7 +86,8 @@ ProgressiveRenderer::ProgressiveRenderer(const Scene& scene, const Camera& camer
     : scene_(scene),
       camera_(camera),
       settings_(settings),
-      integrator_(scene, settings.integrator) {
+      integrator_(scene, settings.integrator),
+      backdrop_(settings.backdrop, scene.lights().litByDefault()) {
     if (settings.threads < 0 || settings.threads > kMaxThreads) {
         throw Error("--threads must be in 1.." + std::to_string(kMaxThreads) + " (0: all cores)");
     }
@@ -146,12 +148,17 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                 std::vector<PixelStreams> batchStreams;
                 batchStreams.reserve(PathIntegrator::kBatch);
                 std::vector<Ray> cameraRays;
+                std::vector<float> imageHeights;  // the camera rays': 0 at the top edge, 1 at the bottom
                 std::vector<glm::vec3> radiance(PathIntegrator::kBatch);
+                std::array<bool, PathIntegrator::kBatch> onSurface;
                 const auto traceBatch = [&] {
                     integrator_.radiance(cameraRays, batchSamples, std::span(radiance.data(), cameraRays.size()),
-                                         rays);
+                                         rays, std::span(onSurface.data(), cameraRays.size()));
                     for (size_t k = 0; k < cameraRays.size(); ++k) {
-                        buffer.addSample(batchPixels[k], radiance[k]);
+                        if (!onSurface[k] && !backdrop_.showsEnvironment()) {
+                            radiance[k] = backdrop_.radiance(imageHeights[k]);
+                        }
+                        buffer.addSample(batchPixels[k], radiance[k], onSurface[k]);
                         const bool lastStep = batchSamples[k].step() + 1 == kPathsPerPass;
                         if (lastStep) buffer.completePass(batchPixels[k]);
                     }
@@ -160,6 +167,7 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                     batchSamples.clear();
                     batchStreams.clear();
                     cameraRays.clear();
+                    imageHeights.clear();
                 };
                 for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {
                     for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
@@ -176,7 +184,9 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                             } else {
                                 batchSamples.emplace_back(settings_.seed, pixel, pass, step);
                             }
-                            cameraRays.push_back(camera_.generateRay(x, y, batchSamples.back().pixelJitter()));
+                            const glm::vec2 jitter = batchSamples.back().pixelJitter();
+                            cameraRays.push_back(camera_.generateRay(x, y, jitter));
+                            imageHeights.push_back((static_cast<float>(y) + jitter.y) / static_cast<float>(height));
                             if (cameraRays.size() == PathIntegrator::kBatch) {
                                 traceBatch();
                                 streams = nullptr;

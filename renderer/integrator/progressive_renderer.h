@@ -4,7 +4,8 @@
 // (renderPass, the batch renderer) or in 24 steps of one path per pixel (renderStep, the viewer),
 // with the same samples either way. Work is split into tiles over a TBB arena of the requested
 // size; a pixel's samples depend only on (seed, pixel, pass, step, bounce), so the image is
-// bit-identical for any thread count.
+// bit-identical for any thread count. Camera rays that find no surface show the backdrop
+// (film/backdrop.h), and the buffer counts those that do (its coverage).
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -14,6 +15,7 @@
 
 #include "film/accumulation_buffer.h"
 #include "film/adaptive_sampling.h"
+#include "film/backdrop.h"
 #include "scene/camera.h"
 #include "integrator/path_integrator.h"
 #include "scene/scene.h"
@@ -34,6 +36,8 @@ struct RenderSettings {
     int niceness = 0;
     // Which pixels stop receiving passes; applied by RenderSession (render_session.h).
     AdaptiveSettings adaptive{};
+    // What camera rays that leave the scene show.
+    BackdropSetting backdrop{};
 };
 
 // How much of a step to render (renderStep): the viewer renders a slow step in bands of rows so
@@ -77,6 +81,7 @@ private:
     const Camera& camera_;
     RenderSettings settings_;
     PathIntegrator integrator_;
+    Backdrop backdrop_;
     std::unique_ptr<tbb::task_arena> arena_;
     std::unique_ptr<tbb::task_scheduler_observer> niceness_;  // observes arena_; declared after it
     std::atomic<uint64_t> paths_{0};

@@ -1,11 +1,8 @@
 #include "io/image_io.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
-#include <functional>
-#include <system_error>
-#include <unistd.h>
+#include <cctype>
+#include <exception>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -15,32 +12,33 @@
 #include <stb_image_write.h>
 
 #include "io/exr_header.h"
+#include "io/output_file.h"
 #include "util/text_file.h"
 #include "util/error.h"
 
 namespace strata {
 namespace {
 
-// Writes through `write(temporaryPath)`, then renames the temporary over `path`.
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::string&)>& write) {
-    const std::filesystem::path temporary =
-        path.string() + ".tmp-" + std::to_string(static_cast<long>(getpid()));
-    try {
-        write(temporary.string());
-        std::filesystem::rename(temporary, path);
-    } catch (const std::exception& e) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        const std::string reason = e.what();
-        throw Error(path.string() + ": cannot write: " + reason);
-    }
-}
+// The output file as OpenEXR's output stream: OpenEXR writes through it, never opening the
+// target's name itself.
+class OutputFileStream final : public Imf::OStream {
+public:
+    explicit OutputFileStream(OutputFile& file) : Imf::OStream(file.target().c_str()), file_(file) {}
+    void write(const char c[], int n) override { file_.write(c, static_cast<size_t>(n)); }
+    uint64_t tellp() override { return file_.position(); }
+    void seekp(uint64_t position) override { file_.seek(position); }
 
-void writeExr(const std::string& file, const Image& image) {
+private:
+    OutputFile& file_;
+};
+
+void writeExr(OutputFile& file, const Image& image) {
     Imf::Header header(image.width, image.height);
     for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile out(file.c_str(), header);
+    const bool hasAlpha = !image.alpha.empty();
+    if (hasAlpha) header.channels().insert("A", Imf::Channel(Imf::FLOAT));
+    OutputFileStream stream(file);
+    Imf::OutputFile out(stream, header);
     Imf::FrameBuffer frame;
     const size_t xStride = sizeof(glm::vec3);
     const size_t yStride = xStride * image.width;
@@ -48,30 +46,50 @@ void writeExr(const std::string& file, const Image& image) {
     frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
     frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
     frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+    if (hasAlpha) {
+        char* alpha = const_cast<char*>(reinterpret_cast<const char*>(image.alpha.data()));
+        frame.insert("A", Imf::Slice(Imf::FLOAT, alpha, sizeof(float), sizeof(float) * image.width));
+    }
     out.setFrameBuffer(frame);
     out.writePixels(image.height);
 }
 
-void writePfm(const std::string& file, const Image& image) {
-    std::ofstream out(file, std::ios::binary);
+void writePfm(OutputFile& file, const Image& image) {
     // PFM: "PF", size, scale (negative = little-endian), then rows bottom to top.
-    out << "PF\n" << image.width << " " << image.height << "\n-1.0\n";
+    file.write("PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n");
     for (int y = image.height - 1; y >= 0; --y) {
-        out.write(reinterpret_cast<const char*>(&image.pixels[static_cast<size_t>(y) * image.width]),
-                  static_cast<std::streamsize>(sizeof(glm::vec3) * image.width));
+        file.write(&image.pixels[static_cast<size_t>(y) * image.width], sizeof(glm::vec3) * image.width);
     }
-    if (!out.flush()) throw std::runtime_error("write failed");
 }
 
-void writePng(const std::string& file, const Image& image, const PngSettings& settings) {
+// 8-bit RGB rows, top first, as PNG; stb hands the encoded file to a callback, which cannot throw
+// through stb's C code, so a failure is kept and rethrown after.
+void writeRgb8(OutputFile& file, int width, int height, const uint8_t* rgb) {
+    struct Sink {
+        OutputFile& file;
+        std::exception_ptr failure;
+    } sink{file, nullptr};
+    const auto toFile = [](void* context, void* data, int size) {
+        auto& to = *static_cast<Sink*>(context);
+        if (to.failure) return;
+        try {
+            to.file.write(data, static_cast<size_t>(size));
+        } catch (...) {
+            to.failure = std::current_exception();
+        }
+    };
+    const int encoded = stbi_write_png_to_func(toFile, &sink, width, height, 3, rgb, width * 3);
+    if (sink.failure) std::rethrow_exception(sink.failure);
+    if (!encoded) throw Error(file.target().string() + ": cannot write: PNG encoder failed");
+}
+
+void writePng(OutputFile& file, const Image& image, const PngSettings& settings) {
     std::vector<uint8_t> bytes(image.pixels.size() * 3);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
         const glm::vec3 mapped = applyTonemap(image.pixels[i], settings.exposure, settings.tonemap);
         for (int c = 0; c < 3; ++c) bytes[3 * i + c] = toByte(encodeSrgb(mapped[c]));
     }
-    if (!stbi_write_png(file.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3)) {
-        throw std::runtime_error("PNG encoder failed");
-    }
+    writeRgb8(file, image.width, image.height, bytes.data());
 }
 
 // An EXR file's bytes as OpenEXR's input stream, so that a bundle's copy decodes without a file.
@@ -97,22 +115,35 @@ private:
 }  // namespace
 
 ImageFormat imageFormatOf(const std::filesystem::path& path) {
-    const std::string extension = path.extension().string();
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension == ".exr") return ImageFormat::Exr;
     if (extension == ".pfm") return ImageFormat::Pfm;
     if (extension == ".png") return ImageFormat::Png;
     throw Error(path.string() + ": unknown image format (use .exr, .pfm or .png)");
 }
 
-void writeImage(const std::filesystem::path& path, const Image& image, const PngSettings& png) {
-    const ImageFormat format = imageFormatOf(path);
-    writeAtomically(path, [&](const std::string& file) {
+void writeImage(OutputFile& file, const Image& image, const PngSettings& png) {
+    const ImageFormat format = imageFormatOf(file.target());
+    try {
         switch (format) {
             case ImageFormat::Exr: writeExr(file, image); break;
             case ImageFormat::Pfm: writePfm(file, image); break;
             case ImageFormat::Png: writePng(file, image, png); break;
         }
-    });
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {  // OpenEXR's
+        throw Error(file.target().string() + ": cannot write: " + e.what());
+    }
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image, const PngSettings& png) {
+    imageFormatOf(path);  // an unknown extension fails before a temporary is made
+    OutputFile file(path);
+    writeImage(file, image, png);
+    file.commit();
 }
 
 void writeRgb8Png(const std::filesystem::path& path, int width, int height,
@@ -121,11 +152,9 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
     if (width < 1 || height < 1 || rgb.size() != static_cast<size_t>(width) * height * 3) {
         throw Error(path.string() + ": image size does not match its pixels");
     }
-    writeAtomically(path, [&](const std::string& file) {
-        if (!stbi_write_png(file.c_str(), width, height, 3, rgb.data(), width * 3)) {
-            throw std::runtime_error("PNG encoder failed");
-        }
-    });
+    OutputFile file(path);
+    writeRgb8(file, width, height, rgb.data());
+    file.commit();
 }
 
 void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name,
@@ -142,9 +171,11 @@ void requirePlausibleImageSize(long long width, long long height, size_t fileByt
     }
 }
 
-Image readExr(const std::filesystem::path& path) {
+Image readExr(const std::filesystem::path& path) { return readExr(readExrFile(path), path.string()); }
+
+std::string readExrFile(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
-    return readExr(readTextFile(path, "EXR file"), path.string());
+    return readTextFile(path, "EXR file");
 }
 
 Image readExr(std::string_view bytes, const std::string& name) {
@@ -177,6 +208,13 @@ Image readExr(std::string_view bytes, const std::string& name) {
         frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
         frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
         frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+        if (in.header().channels().findChannel("A")) {
+            image.alpha.resize(image.pixels.size());
+            char* alpha = reinterpret_cast<char*>(image.alpha.data()) -
+                          static_cast<ptrdiff_t>(window.min.x) * sizeof(float) -
+                          static_cast<ptrdiff_t>(window.min.y) * sizeof(float) * image.width;
+            frame.insert("A", Imf::Slice(Imf::FLOAT, alpha, sizeof(float), sizeof(float) * image.width));
+        }
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);
         return image;

@@ -11,6 +11,12 @@ namespace strata {
 
 enum class Tonemap { Clamp, Reinhard, Aces };
 
+// The programs' display (the viewer, and `strata render`'s PNG): Narkowicz's fit of the ACES
+// filmic curve, x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), which lifts the shadows a little and
+// rolls the highlights off (to 1 at x = 7.2) where the clamp would cut them, at the exposure of
+// io/auto_exposure.h unless one is given. Clamp is the linear radiance as it is, cut at 1.
+inline constexpr Tonemap kDefaultTonemap = Tonemap::Aces;
+
 std::optional<Tonemap> parseTonemap(std::string_view name);
 std::string_view tonemapName(Tonemap tonemap);
 // "clamp|reinhard|aces", for option help and error messages.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "geometry/rounding.h"
 #include "util/constants.h"
 
 namespace strata {
@@ -17,6 +18,11 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     centroid_ = (glm::dvec3(p0) + glm::dvec3(p1) + glm::dvec3(p2)) / 3.0;
     radius_ = std::max({glm::distance(centroid_, glm::dvec3(p0)), glm::distance(centroid_, glm::dvec3(p1)),
                         glm::distance(centroid_, glm::dvec3(p2))});
+    // One bound covers the points both samplers compute: p0 + b1 e1 + b2 e2 in float with
+    // barycentrics at most 1 (a few operations on terms up to |p0| + |e1| + |e2|), and a point of
+    // the triangle found in double and rounded once; plus Embree's rounding.
+    const float largest = maxComponent(glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2)));
+    pointError_ = gammaBound(5) * (glm::abs(p0) + glm::abs(p1 - p0) + glm::abs(p2 - p0)) + traversalError(largest);
 }
 
 AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
@@ -64,9 +70,11 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     const double cosLight = -glm::dot(glm::dvec3(normal_), direction);
     if (!(cosLight > 0.0)) return std::nullopt;
     const double distance = glm::dot(glm::dvec3(normal_), glm::dvec3(point) - glm::dvec3(p0_)) / cosLight;
+    // The point, found in double, is rounded once to float.
+    const glm::vec3 onLight(glm::dvec3(point) + distance * direction);
     return LightSample{glm::vec3(direction), static_cast<float>(distance),
                        radianceAlong(glm::dvec3(point), direction, distance),
-                       static_cast<float>(1.0 / triangle->solidAngle()), true};
+                       static_cast<float>(1.0 / triangle->solidAngle()), true, onLight, pointError_, normal_};
 }
 
 std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
@@ -82,14 +90,20 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true};
+    return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true,
+                       onLight, pointError_, normal_};
 }
 
 float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const {
     const float cosLight = -glm::dot(hit.normal, direction);
     if (!(cosLight > 0.0f)) return 0.0f;
     if (const auto triangle = spherical(point)) return static_cast<float>(1.0 / triangle->solidAngle());
-    return hit.distance * hit.distance / (area_ * cosLight);
+    // The distance from `point`, as sampleArea measures it, rather than the hit's from the ray's
+    // origin, which is off the surface by a margin that grows with the coordinates: the two
+    // strategies' densities must agree for their MIS weights to sum to one.
+    const double height = glm::dot(glm::dvec3(normal_), glm::dvec3(point) - glm::dvec3(p0_));
+    const double distance = height / cosLight;
+    return static_cast<float>(distance * distance / (area_ * cosLight));
 }
 
 glm::vec3 AreaLight::emitted(const glm::vec3& direction, const LightHit& hit) const {

@@ -71,6 +71,7 @@ private:
     float area_;
     glm::dvec3 centroid_;
     double radius_;  // of the sphere about the centroid through the farthest vertex
+    glm::vec3 pointError_;  // a bound on the rounding error of any sampled point (constructor)
     double minSphericalSolidAngle_;
     const Material* textured_ = nullptr;
     std::array<glm::vec2, 3> uvs_{};

@@ -49,11 +49,11 @@ EnvironmentMapFile checkedMap(Image map, const std::string& name) {
 
 }  // namespace
 
-Environment resolveEnvironment(const Environment& given, bool sceneHasLights) {
+Environment resolveEnvironment(const Environment& given, bool lightsOutshineSky) {
     Environment resolved = given;
     if (given.kind == Environment::Kind::Default) {
-        resolved.kind = sceneHasLights ? Environment::Kind::None : Environment::Kind::Uniform;
-        resolved.radiance = glm::vec3(1.0f);
+        resolved.kind = lightsOutshineSky ? Environment::Kind::None : Environment::Kind::Uniform;
+        resolved.radiance = glm::vec3(kDefaultSkyRadiance);
     }
     if (resolved.kind == Environment::Kind::Uniform && !(maxComponent(resolved.radiance) > 0.0f)) {
         resolved.kind = Environment::Kind::None;

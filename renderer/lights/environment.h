@@ -3,9 +3,9 @@
 // light at infinity it becomes: none, a uniform radiance (uniform_environment_light.h) or a
 // latitude-longitude HDR map (environment_map_light.h).
 //
-// The default rule: a scene given no environment and holding no light at all (no Ke, no point
-// light) is lit by a uniform environment of radiance 1, under which a diffuse surface that sees
-// only the sky shows its albedo (notes section 5.3); a scene with lights stays dark outside.
+// The default rule: a scene given no environment is lit by a uniform environment of radiance 1,
+// under which a diffuse surface that sees only the sky shows its albedo (notes section 5.3),
+// unless its own lights outshine that sky (scene_lights.h says when); then it stays dark outside.
 #include <cstddef>
 #include <filesystem>
 #include <memory>
@@ -27,13 +27,12 @@ struct Environment {
     float rotationDegrees = 0.0f;               // Map: turned about the up axis +y
 };
 
-// What a scene says on stderr when the default rule lights it.
-inline constexpr const char* kDefaultEnvironmentNote =
-    "the scene has no light; lighting it with a uniform white environment (--env none for black)";
+// The radiance of the default environment.
+inline constexpr float kDefaultSkyRadiance = 1.0f;
 
-// The environment after the default rule, given whether the scene has any other light; a black
-// uniform environment becomes none.
-Environment resolveEnvironment(const Environment& given, bool sceneHasLights);
+// The environment after the default rule, given whether the scene's own lights outshine the
+// default sky; a black uniform environment becomes none.
+Environment resolveEnvironment(const Environment& given, bool lightsOutshineSky);
 // The largest radiance component the environment sends (for the truncation bound's Le_max).
 float maxRadiance(const Environment& environment);
 // The light of a resolved environment, or nullptr for none. `sceneRadius` is the radius of the

@@ -19,15 +19,19 @@ struct LightSample {
     glm::vec3 radiance;   // arriving along -direction (for a delta light: intensity / distance^2)
     float pdf;            // solid-angle density of `direction`; 0 for a delta light
     bool onSurface;       // the point lies on scene geometry, which a shadow ray must stop short of
+    // For a point on a surface: the point as computed, the per-axis bound of its rounding error
+    // (geometry/rounding.h) and the surface's unit normal there, so that a shadow ray can end just
+    // short of the surface however far it is from the origin of the coordinates.
+    glm::vec3 point{0.0f};
+    glm::vec3 pointError{0.0f};
+    glm::vec3 normal{0.0f};
 };
 
 // Where a ray reached a light: for a light on the scene's triangles, the triangle's unit
-// geometric normal, the distance along the (unit) ray and the hit's barycentrics of vertices 1
-// and 2 (where a textured emitter looks up its radiance); a ray that left the scene has distance
-// infinity and no normal.
+// geometric normal and the hit's barycentrics of vertices 1 and 2 (where a textured emitter looks
+// up its radiance); a ray that left the scene has no normal.
 struct LightHit {
     glm::vec3 normal{0.0f};
-    float distance = 0.0f;
     glm::vec2 barycentrics{0.0f};
 };
 

@@ -1,5 +1,6 @@
 #include "lights/scene_lights.h"
 
+#include <glm/geometric.hpp>
 
 #include "lights/area_light.h"
 #include "lights/directional_light.h"
@@ -11,6 +12,28 @@ namespace {
 double meanPower(const Light& light) {
     const glm::vec3 p = light.power();
     return (static_cast<double>(p.x) + p.y + p.z) / 3.0;
+}
+
+// Emitting triangles that make up this share of the scene's area outshine the default sky
+// whatever their radiance.
+constexpr double kEmittingShare = 0.5;
+
+double areaOf(const std::array<glm::vec3, 3>& corners) {
+    const glm::dvec3 p0(corners[0]);
+    return 0.5 * glm::length(glm::cross(glm::dvec3(corners[1]) - p0, glm::dvec3(corners[2]) - p0));
+}
+
+// The rule of scene_lights.h: whether the scene's own lights outshine the default sky.
+bool outshineSky(const LightDescriptions& descriptions) {
+    if (!descriptions.pointLights.empty() || !descriptions.directionalLights.empty()) return true;
+    double emitting = 0.0;
+    for (const EmittingTriangle& emitter : descriptions.emitters) {
+        const double area = areaOf(emitter.corners);
+        if (!(area > 0.0)) continue;  // no light (the constructor's rule)
+        if (emitter.material->maxEmission() > kDefaultSkyRadiance) return true;
+        emitting += area;
+    }
+    return emitting > 0.0 && emitting >= kEmittingShare * descriptions.surfaceArea;
 }
 
 std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
@@ -39,17 +62,29 @@ SceneLights::SceneLights(const LightDescriptions& descriptions)
         add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius_));
     }
     sceneOwnLights_ = lights_.size();
+    outshineSky_ = outshineSky(descriptions);
     setEnvironment(descriptions.environment);
 }
 
 void SceneLights::setEnvironment(const Environment& given) {
     lights_.resize(sceneOwnLights_);
     atInfinity_.clear();
-    environment_ = resolveEnvironment(given, sceneOwnLights_ > 0);
+    environment_ = resolveEnvironment(given, outshineSky_);
     maxRadianceAtInfinity_ = maxRadiance(environment_);
     litByDefault_ = given.kind == Environment::Kind::Default && environment_.kind != Environment::Kind::None;
     if (auto light = makeEnvironmentLight(environment_, sceneRadius_)) atInfinity_.push_back(add(std::move(light)));
     sampler_ = LightSampler(powersOf(lights_));
+}
+
+std::string_view SceneLights::defaultSkyReason() const {
+    if (!litByDefault_) return {};
+    return sceneOwnLights_ == 0 ? "the scene has no light"
+                                : "the scene's only lights are emitters no brighter than a white sky of radiance 1";
+}
+
+std::string defaultEnvironmentNote(const SceneLights& lights) {
+    return std::string(lights.defaultSkyReason()) +
+           "; lighting it with a uniform white environment (--env none for black)";
 }
 
 uint32_t SceneLights::add(std::unique_ptr<Light> light) {

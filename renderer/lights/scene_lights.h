@@ -5,6 +5,14 @@
 // it knows no light by its kind. A new kind of light is a file in this folder and one line in
 // SceneLights' constructor. The default environment rule (environment.h) is applied here.
 //
+// The default sky lights a scene given no environment unless the scene has a light that outshines
+// it: a point or directional light; an emitting triangle brighter than the sky, its radiance
+// above kDefaultSkyRadiance in some channel (a textured emitter's factor times its brightest
+// texel): brighter than a white surface under that sky; or emitting triangles that make up at
+// least half of the scene's area (a furnace, whose emission is what it shows). Emitters no brighter
+// than the sky (glowing labels, screens: glTF's emissive factor, which alone stays at most 1) then
+// glow in the daylight; they are lights still, found by rays and sampled.
+//
 // The environment comes last so that it can be replaced alone: relighting a scene rebuilds the
 // environment's light and the power-based choice, never the lights of its triangles.
 //
@@ -13,6 +21,8 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -50,6 +60,9 @@ struct LightDescriptions {
     Environment environment;
     // Of a sphere that holds the scene, by which lights at infinity weigh their power.
     float sceneRadius = 0.0f;
+    // Of all the world's triangles (each placement of a shared mesh's), by which the default
+    // sky's rule weighs the emitters' area.
+    double surfaceArea = 0.0;
 };
 
 class SceneLights {
@@ -74,9 +87,12 @@ public:
     const std::vector<uint32_t>& lightsAtInfinity() const { return atInfinity_; }
     // The largest radiance component arriving from outside the scene (0 without an environment).
     float maxRadianceAtInfinity() const { return maxRadianceAtInfinity_; }
-    // Whether the scene, having no light of its own and no environment given, is lit by the
-    // default uniform white environment (environment.h).
+    // Whether the scene, given no environment and no light that outshines the sky, is lit by
+    // the default uniform white environment (the rule above).
     bool litByDefault() const { return litByDefault_; }
+    // Why it is, for messages: "the scene has no light", or that its lights are emitters no
+    // brighter than the sky; empty when it is not.
+    std::string_view defaultSkyReason() const;
     // The delta lights (point and directional), which next-event estimation alone reaches.
     size_t deltaLights() const { return deltaLights_; }
 
@@ -85,6 +101,7 @@ private:
 
     std::vector<std::unique_ptr<Light>> lights_;
     size_t sceneOwnLights_ = 0;  // the lights before the environment's
+    bool outshineSky_ = false;   // those lights, by the rule above
     float sceneRadius_ = 0.0f;   // of the bounding sphere, which lights at infinity need
     Environment environment_;
     std::vector<int32_t> triangleLight_;
@@ -94,5 +111,8 @@ private:
     bool litByDefault_ = false;
     LightSampler sampler_;
 };
+
+// The note a scene lit by the default sky prints on stderr: why, and how to keep it dark.
+std::string defaultEnvironmentNote(const SceneLights& lights);
 
 }  // namespace strata

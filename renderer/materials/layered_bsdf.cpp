@@ -4,8 +4,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "materials/fresnel.h"
 #include "util/constants.h"
-#include "sampling/hemisphere.h"
 
 namespace strata {
 namespace {
@@ -37,7 +37,7 @@ glm::vec3 LayeredBsdf::specularAlbedo(float mu) const {
     return specular_ * e.x + (glm::vec3(1.0f) - specular_) * e.y;
 }
 
-glm::vec3 LayeredBsdf::tabulatedAlbedo(const glm::vec3& wo) const {
+glm::vec3 LayeredBsdf::albedo(const glm::vec3& wo) const {
     const glm::vec3 e = specularAlbedo(wo.z);
     return e + diffuse_ * (glm::vec3(1.0f) - e);
 }
@@ -62,33 +62,45 @@ float LayeredBsdf::specularProbability(const glm::vec3& wo) const {
     return std::clamp(specular / std::max(specular + diffuse, 1e-6f), 0.05f, 0.95f);
 }
 
-std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, glm::vec2 u,
-                                              float lobeChoice) const {
+std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, const BsdfNumbers& numbers,
+                                              TransportMode) const {
+    if (!(wo.z > 0.0f)) return std::nullopt;
     const float pSpecular = specularProbability(wo);
     if (pSpecular == 0.0f) {
-        // Pure Lambertian: f cos / pdf = (Kd / pi) cos / (cos / pi) is Kd exactly, with no
-        // rounding (the cosine-sampled furnace then has zero variance, notes section 5.1).
-        const glm::vec3 wi = sampleCosineHemisphere(u);
-        return BsdfSample{wi, cosineHemispherePdf(wi), diffuse_};
+        // Lambertian: f cos / pdf is f times the warp's closed-form cos / pdf, with no division
+        // by the density (so cosine sampling's weight is the same for every direction, and the
+        // cosine-sampled furnace has zero variance, notes section 5.1).
+        const WarpedDirection warped = warpDiffuse(numbers.diffuse);
+        const glm::vec3& wi = warped.direction;
+        if (!(wi.z > 0.0f)) return std::nullopt;
+        return BsdfSample{wi, diffuseNormalisation_, wi.z / warped.cosOverPdf,
+                          diffuseNormalisation_ * warped.cosOverPdf, kReflection | kDiffuse, 1.0f,
+                          numbers.diffuse.stratum};
     }
     glm::vec3 wi;
-    if (lobeChoice < pSpecular) {
-        const auto specular = sampleSpecular(wo, u);
+    BsdfFlags lobe = kReflection | kDiffuse;
+    int stratum = numbers.diffuse.stratum;
+    if (numbers.lobeChoice < pSpecular) {
+        const auto specular = sampleSpecular(wo, numbers.lobePoint);
         if (!specular) return std::nullopt;
         wi = *specular;
+        lobe = kReflection | kGlossy;
+        stratum = -1;  // the specular lobe's direction lies in no particular stratum
     } else {
-        wi = sampleCosineHemisphere(u);
+        wi = warpDiffuse(numbers.diffuse).direction;
     }
-    const float density = pdf(wo, wi);
+    float density = (1.0f - pSpecular) * diffuseWarpPdf(numbers.diffuse.warp, wi);
+    density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
     if (!(density > 0.0f) || wi.z <= 0.0f) return std::nullopt;
-    return BsdfSample{wi, density, evaluate(wo, wi) * (wi.z / density)};
+    const glm::vec3 f = evaluate(wo, wi);
+    return BsdfSample{wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum};
 }
 
-float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
+float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp warp) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     const float pSpecular = specularProbability(wo);
-    float density = (1.0f - pSpecular) * cosineHemispherePdf(wi);
-    if (pSpecular > 0.0f) density += pSpecular * specularPdf(wo, wi);
+    float density = (1.0f - pSpecular) * diffuseWarpPdf(warp, wi);
+    if (pSpecular > 0.0f) density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
     return density;
 }
 
@@ -97,10 +109,6 @@ std::optional<glm::vec3> LayeredBsdf::sampleSpecular(const glm::vec3& wo, glm::v
     const glm::vec3 wi = 2.0f * glm::dot(wo, h) * h - wo;
     if (wi.z <= 0.0f) return std::nullopt;
     return glm::normalize(wi);
-}
-
-float LayeredBsdf::specularPdf(const glm::vec3& wo, const glm::vec3& wi) const {
-    return lobe_->distribution.reflectionPdf(wo, wi);
 }
 
 }  // namespace strata

@@ -2,6 +2,7 @@
 // A surface's material as scene files give it (MTL, glTF): plain data, turned into a BSDF at each
 // hit by MaterialTable (material_table.h). The numbers are the material's constants; each texture,
 // where there is one, multiplies its constant at the hit's UV (textures/texture.h's convention).
+#include <limits>
 #include <memory>
 #include <optional>
 #include <glm/vec2.hpp>
@@ -17,6 +18,12 @@ namespace strata {
 struct MetallicRoughness {
     glm::vec3 baseColor{1.0f};
     float metallic = 1.0f;
+    // A dielectric's reflectance at normal incidence: ((ior - 1) / (ior + 1))^2, times
+    // KHR_materials_specular's colour and factor.
+    glm::vec3 dielectricF0{0.04f};
+    // KHR_materials_transmission's factor: the share of the dielectric part (1 - metallic) that
+    // transmits.
+    float transmission = 0.0f;
 };
 
 struct MaterialTextures {
@@ -35,6 +42,12 @@ struct MaterialTextures {
     // increasing v; x and y are scaled by `normalScale` (glTF normalTexture.scale).
     std::shared_ptr<const Texture> normal;
     float normalScale = 1.0f;
+    // R times `transmission` (glTF transmissionTexture).
+    std::shared_ptr<const Texture> transmission;
+    // R times `clearcoat`, G times `clearcoatRoughness` (glTF clearcoatTexture and
+    // clearcoatRoughnessTexture).
+    std::shared_ptr<const Texture> clearcoat;
+    std::shared_ptr<const Texture> clearcoatRoughness;
 };
 
 struct Material {
@@ -42,14 +55,34 @@ struct Material {
     glm::vec3 diffuse{0.0f};   // Kd: Lambertian albedo
     glm::vec3 emission{0.0f};  // Ke: radiance emitted on the counter-clockwise (front) side
     glm::vec3 specular{0.0f};  // Ks: Fresnel reflectance at normal incidence of the GGX layer
-    float roughness = 1.0f;    // Pr (or converted from Ns): GGX alpha = Pr^2 (microfacet.h)
+    float roughness = 1.0f;    // Pr (or converted from Ns): GGX alpha = Pr^2 (microfacet.h); 0 is
+                               // smooth: a mirror, or a smooth dielectric
+    // A dielectric (glass, water): the share of the surface that transmits, 0 (opaque: Kd and Ks
+    // above) to 1 (MTL illum 4, 6, 7; glTF KHR_materials_transmission), its index of refraction
+    // (Ni, KHR_materials_ior) and transmission filter (Tf; glTF: the base colour).
+    float transmission = 0.0f;
+    float ior = 1.5f;
+    glm::vec3 transmissionFilter{1.0f};
+    // A sheet with no inside (a window pane; glTF without KHR_materials_volume or with thickness
+    // 0): reflection and straight transmission through both of its faces. Otherwise the surface
+    // bounds a volume, which absorbs by Beer-Lambert's law: a path through it keeps
+    // attenuationColor after attenuationDistance (KHR_materials_volume; infinity: no absorption).
+    bool thinWalled = false;
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = std::numeric_limits<float>::infinity();
+    // A clear coat over the material (KHR_materials_clearcoat): its weight and roughness.
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
     // Set by glTF when a texture varies base colour or metallic: Kd and Ks are then mapped from
     // these at each hit, and `diffuse`/`specular` above are their untextured values.
     std::optional<MetallicRoughness> metallicRoughness{};
     MaterialTextures textures{};
 
-    // Whether any texture changes the BSDF from hit to hit (colour or roughness/metallic).
-    bool hasReflectanceTextures() const { return textures.colour || textures.roughnessMetallic; }
+    // Whether any texture changes the BSDF from hit to hit.
+    bool hasReflectanceTextures() const {
+        return textures.colour || textures.roughnessMetallic || textures.transmission || textures.clearcoat ||
+               textures.clearcoatRoughness;
+    }
     // Whether the hit at `uv` is cut out (no surface there).
     bool cutOut(glm::vec2 uv) const {
         return textures.coverage && textures.coverage->lookup(uv)[textures.coverageChannel] < textures.alphaCutoff;

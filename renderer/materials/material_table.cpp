@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <glm/exponential.hpp>
 
 #include "materials/metallic_roughness.h"
 #include "materials/microfacet.h"
@@ -15,6 +16,23 @@ bool isZero(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.
 // create energy), NaN read as 0.
 float unitClamped(float v) { return v >= 0.0f ? std::min(v, 1.0f) : 0.0f; }
 glm::vec3 unitClamped(const glm::vec3& v) { return {unitClamped(v.x), unitClamped(v.y), unitClamped(v.z)}; }
+
+// Beer-Lambert: a path that goes `distance` through the volume keeps `colour`.
+glm::vec3 absorptionOf(const Material& m) {
+    if (m.transmission <= 0.0f || m.thinWalled || !(m.attenuationDistance < std::numeric_limits<float>::infinity())) {
+        return glm::vec3(0.0f);
+    }
+    const glm::vec3 colour = glm::clamp(m.attenuationColor, glm::vec3(1e-6f), glm::vec3(1.0f));
+    return -glm::log(colour) / std::max(m.attenuationDistance, 1e-30f);
+}
+
+// The layered model's two layers from a material's colour constants (MTL's Kd and Ks directly,
+// glTF's through its metallic-roughness mapping).
+LayeredReflectance reflectanceOf(const Material& m, const glm::vec3& colour, float metallicFactor) {
+    if (!m.metallicRoughness) return {m.diffuse * colour, m.specular};
+    const MetallicRoughness& mr = *m.metallicRoughness;
+    return fromMetallicRoughness(mr.baseColor * colour, mr.metallic * metallicFactor, mr.dielectricF0);
+}
 }  // namespace
 
 const SpecularLobe* MaterialTable::lobeFor(float roughness) {
@@ -25,45 +43,101 @@ const SpecularLobe* MaterialTable::lobeFor(float roughness) {
     return lobes_.emplace_back(std::make_unique<SpecularLobe>(alpha)).get();
 }
 
+const SpecularLobe* MaterialTable::quantisedLobe(float roughness, bool smoothIsNull) const {
+    const auto level = static_cast<size_t>(std::lround(unitClamped(roughness) * (kRoughnessLevels - 1)));
+    return level == 0 && smoothIsNull ? nullptr : quantisedLobes_[level];
+}
+
 MaterialTable::MaterialTable(const std::vector<Material>& materials) {
     entries_.reserve(materials.size());
     for (const Material& m : materials) {
-        const bool black = isZero(m.diffuse) && isZero(m.specular);
-        const SpecularLobe* lobe = isZero(m.specular) && !m.metallicRoughness ? nullptr : lobeFor(m.roughness);
+        const bool black = isZero(m.diffuse) && isZero(m.specular) && m.transmission <= 0.0f && m.clearcoat <= 0.0f;
+        const bool specularLayer = !isZero(m.specular) || m.metallicRoughness || m.transmission > 0.0f;
+        const SurfacePoint constants{m.diffuse,
+                                     m.specular,
+                                     m.roughness,
+                                     specularLayer ? lobeFor(m.roughness) : nullptr,
+                                     m.transmission,
+                                     m.ior,
+                                     m.transmissionFilter,
+                                     m.thinWalled,
+                                     m.clearcoat,
+                                     m.clearcoat > 0.0f && m.clearcoatRoughness > 0.0f ? lobeFor(m.clearcoatRoughness)
+                                                                                       : nullptr};
         int32_t textured = -1;
         if (m.hasReflectanceTextures() && !black) {
             textured = static_cast<int32_t>(textured_.size());
             textured_.push_back(m);
-            if (m.textures.roughnessMetallic && !quantisedLobes_[0]) {
+            if ((m.textures.roughnessMetallic || m.textures.clearcoatRoughness) && !quantisedLobes_[0]) {
                 for (int level = 0; level < kRoughnessLevels; ++level) {
                     quantisedLobes_[static_cast<size_t>(level)] =
                         lobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
                 }
             }
         }
-        entries_.push_back({LayeredBsdf(m.diffuse, m.specular, lobe), black, textured});
+        entries_.push_back({build(constants, true), build(constants, false), constants, absorptionOf(m), black, textured});
     }
 }
 
-LayeredBsdf MaterialTable::texturedBsdf(const Entry& entry, glm::vec2 uv) const {
-    const Material& m = textured_[static_cast<size_t>(entry.textured)];
-    const glm::vec3 colour =
-        m.textures.colour ? unitClamped(glm::vec3(m.textures.colour->lookup(uv))) : glm::vec3(1.0f);
-    if (!m.metallicRoughness) {
-        // MTL: map_Kd times Kd; Ks and the roughness stay constant.
-        return LayeredBsdf(m.diffuse * colour, m.specular, entry.bsdf.lobe());
+Bsdf MaterialTable::build(const SurfacePoint& p, bool front) {
+    const LayeredBsdf layered(p.diffuse, p.specular, p.lobe);
+    if (p.transmission > 0.0f) {
+        const glm::vec3& filter = p.transmissionFilter;
+        const float eta = front ? p.ior : 1.0f / p.ior;
+        const auto blended = [&](const auto& dielectric) -> Bsdf {
+            if (p.transmission >= 1.0f) return dielectric;
+            return TransmissionBlend(layered, dielectric, p.transmission);
+        };
+        if (p.thinWalled) return blended(ThinDielectric(p.ior, filter));
+        if (p.roughness == 0.0f) return blended(SmoothDielectric(eta, filter));
+        return blended(RoughDielectric(eta, ggxAlphaFromRoughness(p.roughness), filter));
     }
-    float metallic = m.metallicRoughness->metallic;
-    const SpecularLobe* lobe = entry.bsdf.lobe();
+    const bool smoothSpecular = p.roughness == 0.0f && !isZero(p.specular);
+    const CoatLayer coat{p.clearcoat, glm::vec3(0.04f), p.coatLobe};
+    if (smoothSpecular && isZero(p.diffuse)) {
+        const SmoothConductor mirror(p.specular);
+        if (p.clearcoat > 0.0f) return Coated(coat, mirror);
+        return mirror;
+    }
+    if (smoothSpecular && p.clearcoat <= 0.0f) {
+        return Coated(CoatLayer{1.0f, p.specular, nullptr}, LayeredBsdf(p.diffuse, glm::vec3(0.0f), nullptr));
+    }
+    // (A smooth specular layer under a clear coat keeps the GGX layer's sharpest lobe.)
+    if (p.clearcoat > 0.0f) return Coated(coat, layered);
+    return layered;
+}
+
+Bsdf MaterialTable::texturedBsdf(const Entry& entry, glm::vec2 uv, bool front) const {
+    const Material& m = textured_[static_cast<size_t>(entry.textured)];
+    const auto channel = [&](const std::shared_ptr<const Texture>& texture, int c) {
+        return texture ? unitClamped(texture->lookup(uv)[c]) : 1.0f;
+    };
+    SurfacePoint p = entry.constants;
+    const glm::vec3 colour = m.textures.colour ? unitClamped(glm::vec3(m.textures.colour->lookup(uv))) : glm::vec3(1.0f);
+    float metallic = 1.0f;
     if (m.textures.roughnessMetallic) {
         const glm::vec4 texel = m.textures.roughnessMetallic->lookup(uv);
-        metallic *= unitClamped(texel.b);
-        const float roughness = m.roughness * unitClamped(texel.g);
-        const auto level = static_cast<size_t>(std::lround(roughness * (kRoughnessLevels - 1)));
-        lobe = quantisedLobes_[level];
+        metallic = unitClamped(texel.b);
+        p.roughness = m.roughness * unitClamped(texel.g);
+        p.lobe = quantisedLobe(p.roughness, false);
+        // The quantised roughness, so that its limit 0 is the smooth one.
+        p.roughness = static_cast<float>(std::lround(unitClamped(p.roughness) * (kRoughnessLevels - 1))) /
+                      (kRoughnessLevels - 1);
     }
-    const LayeredReflectance r = fromMetallicRoughness(m.metallicRoughness->baseColor * colour, metallic);
-    return LayeredBsdf(r.diffuse, r.specular, lobe);
+    const LayeredReflectance r = reflectanceOf(m, colour, metallic);
+    p.diffuse = r.diffuse;
+    p.specular = r.specular;
+    if (m.metallicRoughness) {
+        const MetallicRoughness& mr = *m.metallicRoughness;
+        p.transmissionFilter = mr.baseColor * colour;
+        p.transmission = mr.transmission * (1.0f - mr.metallic * metallic);
+    }
+    p.transmission *= channel(m.textures.transmission, 0);
+    p.clearcoat *= channel(m.textures.clearcoat, 0);
+    if (m.textures.clearcoatRoughness) {
+        p.coatLobe = quantisedLobe(m.clearcoatRoughness * channel(m.textures.clearcoatRoughness, 1), true);
+    }
+    return build(p, front);
 }
 
 }  // namespace strata

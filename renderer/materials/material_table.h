@@ -1,22 +1,33 @@
 #pragma once
-// The scene's materials, ready to become a BSDF at any hit. Whatever a material needs beyond its
-// own numbers is prepared here once, when the scene is built: the GGX albedo tables, one per
-// distinct roughness (SpecularLobe), shared by every material of that roughness and kept for the
-// scene's lifetime, so a new integrator on the same scene (the viewer restarts one on every camera
-// move) rebuilds nothing.
+// The scene's materials, ready to become a BSDF at any hit (bsdf.h). Which model a material is
+// follows from its parameters (material.h), in one place (MaterialTable::build):
+//   transmission > 0      a dielectric: thin-walled (thin_dielectric.h), else smooth at roughness
+//                         0 (smooth_dielectric.h) or rough (rough_dielectric.h); blended with the
+//                         opaque model below where transmission < 1 (transmission_blend.h);
+//   roughness 0 with Ks   a mirror (smooth_conductor.h) where Kd is 0, else a smooth coat of
+//                         F0 = Ks over the Lambertian Kd (clear_coat.h): the GGX layer's limit;
+//   otherwise             the layered GGX-over-Lambertian model (layered_bsdf.h);
+// then, where clearcoat > 0, a clear coat over it (clear_coat.h).
 //
-// A material with a colour or roughness/metallic texture gets its BSDF built at each hit from the
-// texel at the hit's UV. Its roughness then varies over the surface, but albedo tables cannot be
-// built per hit: a roughness texture's values are quantised to kRoughnessLevels evenly spaced
-// roughnesses 0, 1/16, ..., 1, whose lobes are built once. The roughness used is off by at most
-// 1/32 (GGX alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255
-// bound from below; the BSDF at each quantised roughness is itself exact and energy-conserving.
+// Whatever a material needs beyond its own numbers is prepared once, when the scene is built: the
+// GGX albedo tables, one per distinct roughness (SpecularLobe), shared by every material of that
+// roughness and kept for the scene's lifetime, so a new integrator on the same scene (the viewer
+// restarts one on every camera move) rebuilds nothing.
+//
+// A material with a texture that changes its BSDF gets the BSDF built at each hit from the texels
+// at the hit's UV. Its roughness then varies over the surface, but albedo tables cannot be built
+// per hit: a roughness texture's values are quantised to kRoughnessLevels evenly spaced roughnesses
+// 0, 1/16, ..., 1, whose lobes are built once. The roughness used is off by at most 1/32 (GGX
+// alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255 bound from
+// below; the BSDF at each quantised roughness is itself exact and energy-conserving.
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
+#include "materials/bsdf.h"
 #include "materials/layered_bsdf.h"
 #include "materials/material.h"
 
@@ -28,28 +39,53 @@ public:
 
     explicit MaterialTable(const std::vector<Material>& materials);
 
-    // The BSDF of `material` at a hit with texture coordinates `uv`. A material whose
-    // parameters are constant over its surface keeps its BSDF made once, and a hit takes a copy:
-    // a few dozen bytes.
-    LayeredBsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f)) const {
+    // The BSDF of `material` at a hit with texture coordinates `uv`, seen from the surface's front
+    // (counter-clockwise) side or from behind it. A dielectric's front is its outside: its index
+    // of refraction there is the inside's over the outside's, and from behind its inverse. A
+    // material whose parameters are constant over its surface keeps its BSDFs made once, and a
+    // hit takes a copy: a few dozen bytes.
+    Bsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f), bool front = true) const {
         const Entry& entry = entries_[material];
-        return entry.textured < 0 ? entry.bsdf : texturedBsdf(entry, uv);
+        if (entry.textured >= 0) return texturedBsdf(entry, uv, front);
+        return front ? entry.front : entry.back;
     }
-    // Whether the material reflects nothing, so a path that reaches it ends there (textures
+    // Whether the material scatters nothing, so a path that reaches it ends there (textures
     // multiply the constants, so a black material stays black).
     bool isBlack(uint32_t material) const { return entries_[material].black; }
+    // The absorption coefficient (per unit length, per channel) inside the volume the material
+    // bounds: 0 for all but a dielectric with KHR_materials_volume's attenuation.
+    const glm::vec3& absorption(uint32_t material) const { return entries_[material].absorption; }
     size_t size() const { return entries_.size(); }
     // The distinct specular lobes built (one per roughness in use, the quantised ones included).
     size_t specularLobes() const { return lobes_.size(); }
 
 private:
+    // A material's parameters at one point of its surface: its constants times its textures.
+    struct SurfacePoint {
+        glm::vec3 diffuse;
+        glm::vec3 specular;
+        float roughness;
+        const SpecularLobe* lobe;  // GGX at `roughness` (null without a specular layer)
+        float transmission;
+        float ior;
+        glm::vec3 transmissionFilter;
+        bool thinWalled;
+        float clearcoat;
+        const SpecularLobe* coatLobe;  // GGX at the coat's roughness; null for a smooth coat
+    };
     struct Entry {
-        LayeredBsdf bsdf;  // at the constants
+        Bsdf front, back;  // at the constants
+        SurfacePoint constants;
+        glm::vec3 absorption;
         bool black;
-        int32_t textured;  // index in textured_, -1 for a material without reflectance textures
+        int32_t textured;  // index in textured_, -1 for a material without BSDF textures
     };
     const SpecularLobe* lobeFor(float roughness);
-    LayeredBsdf texturedBsdf(const Entry& entry, glm::vec2 uv) const;
+    // The lobe of a texture-modulated roughness, quantised as above (null at roughness 0 when
+    // `smoothIsNull`: the coat's smooth limit is a delta, with no lobe).
+    const SpecularLobe* quantisedLobe(float roughness, bool smoothIsNull) const;
+    static Bsdf build(const SurfacePoint& p, bool front);
+    Bsdf texturedBsdf(const Entry& entry, glm::vec2 uv, bool front) const;
 
     std::vector<Entry> entries_;
     std::vector<Material> textured_;

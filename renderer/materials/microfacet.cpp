@@ -17,12 +17,6 @@ float roughnessFromShininess(float shininess) {
     return std::sqrt(alpha);
 }
 
-glm::vec3 schlickFresnel(const glm::vec3& f0, float cosine) {
-    const float m = std::clamp(1.0f - cosine, 0.0f, 1.0f);
-    const float m2 = m * m;
-    return f0 + (glm::vec3(1.0f) - f0) * (m2 * m2 * m);
-}
-
 float GgxDistribution::density(const glm::vec3& h) const {
     if (h.z <= 0.0f) return 0.0f;
     // D = alpha^2 / (pi ((h.z^2 (alpha^2 - 1) + 1)^2), written with the in-plane part so that

@@ -21,9 +21,6 @@ float ggxAlphaFromRoughness(float roughness);
 // Phong to Beckmann, alpha = sqrt(2 / (Ns + 2)), taken as the GGX alpha, so Pr = alpha^(1/2).
 float roughnessFromShininess(float shininess);
 
-// Schlick's Fresnel approximation F0 + (1 - F0)(1 - cos)^5, per colour channel.
-glm::vec3 schlickFresnel(const glm::vec3& f0, float cosine);
-
 class GgxDistribution {
 public:
     explicit GgxDistribution(float alpha) : alpha_(alpha) {}

@@ -1,6 +1,7 @@
 #pragma once
-// A pinhole camera, and the settings that make one: its pose and image size (from the scene
-// description or a --camera file, scene_description.h, or framing the scene).
+// A pinhole or orthographic camera, and the settings that make one: its pose and image size (from
+// the scene description or a --camera file, scene_description.h, a glTF file's camera, or the
+// default camera, default_camera.h).
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -13,6 +14,10 @@ struct CameraPose {
     glm::vec3 lookAt{0.0f, 0.0f, -1.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovYDegrees = 45.0f;
+    // > 0: an orthographic camera (glTF's "orthographic" type) that sees this half-height, in
+    // scene units, about its view axis, its rays parallel from the plane through `position`;
+    // fovYDegrees is then unused. 0: a pinhole.
+    float orthographicHalfHeight = 0.0f;
 };
 
 struct CameraSettings {
@@ -39,7 +44,7 @@ private:
     int width_;
     int height_;
     glm::vec3 forward_;
-    glm::vec3 right_;  // scaled by the half-width of the image plane at distance 1
+    glm::vec3 right_;  // scaled by the half-width of the image plane (at distance 1 for a pinhole)
     glm::vec3 upScaled_;  // scaled by the half-height
 };
 

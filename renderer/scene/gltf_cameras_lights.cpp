@@ -13,30 +13,34 @@ namespace {
 bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
-// glTF 2.0, "Cameras": a camera looks down its node's local -Z, +Y up; the first perspective
-// one reached becomes the scene's. yfov is in radians; aspectRatio and the clip planes give
-// way to Strata's image size and unbounded rays.
+// glTF 2.0, "Cameras": a camera looks down its node's local -Z, +Y up; the first one reached
+// becomes the scene's. A perspective camera's yfov is in radians; an orthographic one's ymag is
+// half the height it sees. aspectRatio, xmag and the clip planes give way to Strata's image size
+// and unbounded rays.
 void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::optional<CameraPose>& camera) {
     const tinygltf::Camera& gltfCamera = gltf.element(gltf.model.cameras, index, "camera");
-    if (gltfCamera.type != "perspective") {
-        gltf.warnOnce("orthographic cameras are not supported (the scene is framed instead)");
-        return;
-    }
     if (camera) return;
-    const double yfov = gltfCamera.perspective.yfov;
-    if (!(yfov > 0.0 && yfov < glm::pi<double>())) gltf.fail("camera " + std::to_string(index) + ": yfov outside (0, pi)");
+    CameraPose pose;
+    const std::string name = "camera " + std::to_string(index);
+    if (gltfCamera.type == "orthographic") {
+        const double ymag = std::abs(gltfCamera.orthographic.ymag);
+        if (!(ymag > 0.0) || !std::isfinite(ymag)) gltf.fail(name + ": ymag is not a finite nonzero number");
+        pose.orthographicHalfHeight = static_cast<float>(ymag);
+    } else {
+        const double yfov = gltfCamera.perspective.yfov;
+        if (!(yfov > 0.0 && yfov < glm::pi<double>())) gltf.fail(name + ": yfov outside (0, pi)");
+        pose.fovYDegrees = static_cast<float>(glm::degrees(yfov));
+    }
     const glm::dvec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     const glm::dvec3 forward(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
     const glm::dvec3 up(world * glm::dvec4(0.0, 1.0, 0.0, 0.0));
     if (!(glm::length(glm::cross(forward, up)) > 0.0)) {
-        gltf.warnOnce("camera " + std::to_string(index) + " is degenerate (the scene is framed instead)");
+        gltf.warnOnce(name + " is degenerate (the scene is framed instead)");
         return;
     }
-    CameraPose pose;
     pose.position = glm::vec3(position);
     pose.lookAt = glm::vec3(position + glm::normalize(forward));
     pose.up = glm::vec3(glm::normalize(up));
-    pose.fovYDegrees = static_cast<float>(glm::degrees(yfov));
     camera = pose;
 }
 

@@ -11,8 +11,8 @@
 
 namespace strata {
 
-// The camera `index` at `world` into `camera` unless one is there already (the first
-// perspective camera wins); an orthographic or degenerate one is a warning.
+// The camera `index` at `world` (perspective or orthographic) into `camera` unless one is there
+// already (the first reached wins); a degenerate one is a warning.
 void takeGltfCamera(GltfModel& gltf, int index, const glm::dmat4& world, std::optional<CameraPose>& camera);
 
 // Moves the look-at point straight ahead to the distance of the scene's centre.

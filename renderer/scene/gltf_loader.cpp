@@ -16,6 +16,8 @@
 #include <utility>
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_nodes.h"
 #include "scene/scene_textures.h"
 #include "util/error.h"
@@ -24,11 +26,27 @@
 namespace strata {
 namespace {
 
-// The extensions whose every requirement Strata meets; another one in extensionsRequired means
-// the file cannot be rendered as its author meant (glTF 2.0, "Specifying Extensions"), except
-// KHR_texture_transform: its textures render untransformed, with a warning (the material's).
-constexpr std::array<std::string_view, 4> kImplementedExtensions{
-    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization", "KHR_texture_transform"};
+// The extensions Strata reads (gltf_materials.h says how far for the materials'); another one in
+// extensionsRequired means the file cannot be rendered as its author meant (glTF 2.0, "Specifying
+// Extensions"), and one in extensionsUsed only is a warning. The compressions are decoded
+// (gltf_meshopt.h, gltf_draco.h) before the model is read.
+constexpr std::array<std::string_view, 12> kImplementedExtensions{
+    "EXT_meshopt_compression",         "KHR_draco_mesh_compression", "KHR_lights_punctual",
+    "KHR_materials_clearcoat",         "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_specular",          "KHR_materials_transmission", "KHR_materials_volume",
+    "KHR_mesh_quantization",           "KHR_meshopt_compression",    "KHR_texture_transform"};
+
+bool implemented(const std::string& extension) {
+    return std::find(kImplementedExtensions.begin(), kImplementedExtensions.end(), extension) !=
+           kImplementedExtensions.end();
+}
+
+// A warning for each extension the file uses that Strata does not read.
+void warnUnreadExtensions(GltfModel& gltf) {
+    for (const std::string& extension : gltf.model.extensionsUsed) {
+        if (!implemented(extension)) gltf.warnOnce("uses extension " + extension + ", which Strata does not read; ignored");
+    }
+}
 
 // The files of a .gltf's URIs while reading: from its folder, each kept for the bundle.
 struct FolderFiles {
@@ -102,21 +120,67 @@ std::string_view jsonOf(const std::string& bytes, bool binary) {
 }
 
 // Refuses a file that requires an extension Strata does not implement, before tinygltf reads
-// what the extension encodes (a Draco-compressed primitive's accessors have no buffer view, say)
-// and fails with a message that does not name it.
-void checkRequiredExtensions(std::string_view json, const std::string& path) {
-    const nlohmann::json document = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
-    if (!document.is_object()) return;  // tinygltf says what is wrong with it
+// what the extension encodes (a compressed primitive's accessors have no buffer view, say) and
+// fails with a message that does not name it.
+void checkRequiredExtensions(const nlohmann::json& document, const std::string& path) {
     const auto required = document.find("extensionsRequired");
     if (required == document.end() || !required->is_array()) return;
     for (const nlohmann::json& extension : *required) {
         if (!extension.is_string()) continue;
         const auto name = extension.get<std::string>();
-        if (std::find(kImplementedExtensions.begin(), kImplementedExtensions.end(), name) ==
-            kImplementedExtensions.end()) {
+        if (!implemented(name)) {
             throw Error(path + ": requires extension " + name + ", which Strata does not implement");
         }
     }
+}
+
+// tinygltf passes over a property of the wrong JSON type as if it were absent (a mesh whose
+// "primitives" is an object has no primitives), so that the file would fail later for a reason
+// it does not name, or render less: the arrays Strata reads through are checked here.
+void checkArrays(const nlohmann::json& document, const std::string& path) {
+    const auto needArray = [&](const nlohmann::json& object, const char* key, const std::string& where) {
+        const auto it = object.find(key);
+        if (it != object.end() && !it->is_array()) {
+            throw Error(path + ": " + where + "\"" + key + "\" is not an array (it is " + it->type_name() + ")");
+        }
+    };
+    for (const char* key : {"accessors", "bufferViews", "buffers", "cameras", "images", "materials", "meshes",
+                            "nodes", "scenes", "textures"}) {
+        needArray(document, key, "");
+    }
+    const auto forEachObject = [&](const char* list, const char* what, auto check) {
+        const auto it = document.find(list);
+        if (it == document.end() || !it->is_array()) return;
+        for (size_t i = 0; i < it->size(); ++i) {
+            if ((*it)[i].is_object()) check((*it)[i], std::string(what) + " " + std::to_string(i) + ": ");
+        }
+    };
+    forEachObject("meshes", "mesh", [&](const nlohmann::json& mesh, const std::string& where) {
+        needArray(mesh, "primitives", where);
+    });
+    forEachObject("nodes", "node", [&](const nlohmann::json& node, const std::string& where) {
+        needArray(node, "children", where);
+    });
+    forEachObject("scenes", "scene", [&](const nlohmann::json& scene, const std::string& where) {
+        needArray(scene, "nodes", where);
+    });
+}
+
+// The file's bytes with its JSON replaced by `json` (a binary file's other chunks kept).
+std::string withJson(const std::string& bytes, bool binary, const std::string& json) {
+    if (!binary) return json;
+    std::string chunk = json;
+    while (chunk.size() % 4) chunk += ' ';
+    const size_t rest = std::min(bytes.size(), 20 + jsonOf(bytes, binary).size());
+    std::string out = bytes.substr(0, 12);
+    const auto word = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    word(static_cast<uint32_t>(chunk.size()));
+    word(0x4E4F534A);  // JSON
+    out += chunk;
+    out.append(bytes, rest, std::string::npos);
+    const auto length = static_cast<uint32_t>(out.size());
+    std::memcpy(out.data() + 8, &length, sizeof length);
+    return out;
 }
 
 // The model of a glTF file's bytes (JSON, or binary by its magic), its URIs read through `files`.
@@ -124,18 +188,27 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path,
                           tinygltf::FsCallbacks files, std::vector<std::string>* images) {
     if (bytes.size() > std::numeric_limits<uint32_t>::max()) throw Error(path + ": larger than 4 GB");
     const bool binary = bytes.compare(0, 4, "glTF") == 0;
-    checkRequiredExtensions(jsonOf(bytes, binary), path);
+    nlohmann::json document = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, /*allow_exceptions=*/false);
+    std::string rewritten;  // the bytes tinygltf reads when they differ from the file's
+    if (document.is_object()) {  // else tinygltf says what is wrong with it
+        checkRequiredExtensions(document, path);
+        checkArrays(document, path);
+        bool changed = giveMeshoptFallbacksData(document);
+        changed = giveDracoIndicesAView(document) || changed;
+        if (changed) rewritten = withJson(bytes, binary, document.dump());
+    }
+    const std::string& read = rewritten.empty() ? bytes : rewritten;
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(files);
     loader.SetImageLoader(keepEncodedImage, images);
     tinygltf::Model model;
     std::string error;
     std::string warning;
-    const auto size = static_cast<unsigned int>(bytes.size());
+    const auto size = static_cast<unsigned int>(read.size());
     const bool loaded =
         binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                             reinterpret_cast<const unsigned char*>(bytes.data()), size, "")
-               : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size, "");
+                                             reinterpret_cast<const unsigned char*>(read.data()), size, "")
+               : loader.LoadASCIIFromString(&model, &error, &warning, read.data(), size, "");
     if (!loaded) {
         const std::string reason = firstLine(error);
         throw Error(path + ": " + (reason.empty() ? "not a glTF file" : reason));
@@ -162,9 +235,12 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const 
     // tinygltf takes a non-const user pointer; the bundle callbacks only read through it.
     auto* files = const_cast<SceneBundle*>(&bundle);
     std::vector<std::string> images;
-    const tinygltf::Model model = loadModel(
+    tinygltf::Model model = loadModel(
         main.bytes, path, tinygltf::FsCallbacks{bundleFileExists, sameName, readBundleFile, nullptr, files}, &images);
+    decodeMeshoptBufferViews(model, path);
+    decodeDracoPrimitives(model, path);
     GltfModel gltf{model, path, images, {}};
+    warnUnreadExtensions(gltf);
     std::vector<std::string> textureWarnings;
     SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes));
     size_t dropped = 0;

@@ -3,13 +3,13 @@
 // scene's node hierarchy becomes one mesh in world space (metres, gltf_nodes.h), a primitive
 // that several nodes use stored once and placed at each:
 // triangle primitives with their normals and UVs, the metallic-roughness materials and their
-// textures (gltf_materials.h), the first perspective camera and the KHR_lights_punctual lights
+// textures (gltf_materials.h), the first camera and the KHR_lights_punctual lights
 // (gltf_cameras_lights.h). tinygltf checks the JSON; the accessors, indices and node references
 // it does not check are checked here (gltf_accessors.h), each failure one line naming the file and
 // what is wrong.
 //
-// Not rendered yet, each noted once in LoadReport::warnings: orthographic cameras (the scene is
-// framed), spot lights' cones (they light as point lights), KHR_texture_transform.
+// Not rendered yet, noted once in LoadReport::warnings: spot lights' cones (they light as point
+// lights).
 #include <filesystem>
 #include <vector>
 

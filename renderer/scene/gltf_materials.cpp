@@ -1,10 +1,12 @@
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "materials/metallic_roughness.h"
@@ -13,10 +15,11 @@ namespace strata {
 namespace {
 
 Material metallicRoughnessMaterial(const std::string& name, const glm::vec3& baseColor, float metallic,
-                                   float roughness, const glm::vec3& emission) {
+                                   float roughness, const glm::vec3& emission,
+                                   const glm::vec3& dielectricF0 = glm::vec3(0.04f)) {
     Material material;
     material.name = name;
-    const LayeredReflectance r = fromMetallicRoughness(baseColor, metallic);
+    const LayeredReflectance r = fromMetallicRoughness(baseColor, metallic, dielectricF0);
     material.diffuse = r.diffuse;
     material.specular = r.specular;
     material.roughness = roughness;
@@ -31,12 +34,13 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
                                          TextureEncoding encoding) {
     if (textureIndex < 0) return nullptr;
     const tinygltf::Texture& texture = gltf.element(gltf.model.textures, textureIndex, where + ": texture");
+    if (const auto transform = extensions.find("KHR_texture_transform"); transform != extensions.end()) {
+        const tinygltf::Value& set = transform->second.Get("texCoord");
+        if (set.IsInt()) texCoord = set.GetNumberAsInt();  // the extension's set overrides the reference's
+    }
     if (texCoord != 0) {
         gltf.warnOnce(where + " uses TEXCOORD_" + std::to_string(texCoord) + ", which Strata does not read; ignored");
         return nullptr;
-    }
-    if (extensions.count("KHR_texture_transform")) {
-        gltf.warnOnce(where + ": KHR_texture_transform is not applied (the texture renders untransformed)");
     }
     if (texture.source < 0) {
         gltf.warnOnce(where + ": texture " + std::to_string(textureIndex) + " has no image it can read; ignored");
@@ -54,7 +58,104 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
     return textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
 }
 
+// A material extension's object, or null when the material does not have it.
+const tinygltf::Value* extensionOf(const tinygltf::Material& m, const std::string& name) {
+    const auto it = m.extensions.find(name);
+    return it == m.extensions.end() || !it->second.IsObject() ? nullptr : &it->second;
+}
+
+// The number `key` of an extension's object, `fallback` when it is absent; a failure naming the
+// material, the extension and the key when it is not a number in [low, high].
+float numberOf(const GltfModel& gltf, const tinygltf::Value& extension, const std::string& key, double fallback,
+               double low, double high, const std::string& where) {
+    if (!extension.Has(key)) return static_cast<float>(fallback);
+    const tinygltf::Value& value = extension.Get(key);
+    const double number = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+    // Checked after narrowing, so that a double too large for a float cannot pass as finite.
+    const auto narrowed = static_cast<float>(number);
+    if (!std::isfinite(narrowed) || narrowed < low || narrowed > high) {
+        gltf.fail(where + ": " + key + " is not a number in " + std::to_string(low) + ".." + std::to_string(high));
+    }
+    return narrowed;
+}
+
+// The texture an extension's textureInfo `key` names, as textureOf reads a core one.
+std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
+                                                const std::string& key, const std::string& where, TextureEncoding encoding) {
+    if (!extension.Has(key)) return nullptr;
+    const tinygltf::Value& info = extension.Get(key);
+    const tinygltf::Value& index = info.Get("index");
+    if (!info.IsObject() || !index.IsInt()) gltf.fail(where + " " + key + " needs a texture index");
+    const tinygltf::Value& texCoord = info.Get("texCoord");
+    tinygltf::ExtensionMap nested;
+    if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+        for (const std::string& name : info.Get("extensions").Keys()) nested[name] = info.Get("extensions").Get(name);
+    }
+    return textureOf(gltf, textures, where + " " + key, index.GetNumberAsInt(), texCoord.IsInt() ? texCoord.GetNumberAsInt() : 0,
+                     nested, encoding);
+}
+
+// The numbers of `name` in a KHR_texture_transform object, else `otherwise`.
+template <size_t N>
+std::array<double, N> transformNumbers(GltfModel& gltf, const std::string& where, const tinygltf::Value& transform,
+                                       const char* name, std::array<double, N> otherwise) {
+    if (!transform.Has(name)) return otherwise;
+    const tinygltf::Value& value = transform.Get(name);
+    std::array<double, N> numbers{};
+    const bool array = N > 1 && value.IsArray() && value.ArrayLen() == N;
+    for (size_t i = 0; i < N; ++i) {
+        const tinygltf::Value& number = array ? value.Get(static_cast<int>(i)) : value;
+        if (!(N == 1 || array) || !number.IsNumber() || !std::isfinite(number.GetNumberAsDouble())) {
+            gltf.fail(where + ": KHR_texture_transform " + name + " needs " + std::to_string(N) + " finite number" +
+                      (N > 1 ? "s" : ""));
+        }
+        numbers[i] = number.GetNumberAsDouble();
+    }
+    return numbers;
+}
+
+// KHR_texture_transform, "Overview": T * R * S as column-major 3x3 matrices on (u, v, 1).
+glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf::ExtensionMap& extensions) {
+    const auto it = extensions.find("KHR_texture_transform");
+    if (it == extensions.end()) return glm::dmat3(1.0);
+    const auto offset = transformNumbers<2>(gltf, where, it->second, "offset", {0.0, 0.0});
+    const double rotation = transformNumbers<1>(gltf, where, it->second, "rotation", {0.0})[0];
+    const auto scale = transformNumbers<2>(gltf, where, it->second, "scale", {1.0, 1.0});
+    const double c = std::cos(rotation);
+    const double s = std::sin(rotation);
+    const glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset[0], offset[1], 1);
+    const glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
+    const glm::dmat3 stretch(scale[0], 0, 0, 0, scale[1], 0, 0, 0, 1);
+    return translate * rotate * stretch;
+}
+
 }  // namespace
+
+glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
+    const tinygltf::Material& m = gltf.model.materials[index];
+    const std::string name = "material '" + m.name + "' (" + std::to_string(index) + ")";
+    const auto& pbr = m.pbrMetallicRoughness;
+    const std::array<std::pair<const char*, std::pair<int, const tinygltf::ExtensionMap*>>, 4> slots{{
+        {"baseColorTexture", {pbr.baseColorTexture.index, &pbr.baseColorTexture.extensions}},
+        {"metallicRoughnessTexture", {pbr.metallicRoughnessTexture.index, &pbr.metallicRoughnessTexture.extensions}},
+        {"emissiveTexture", {m.emissiveTexture.index, &m.emissiveTexture.extensions}},
+        {"normalTexture", {m.normalTexture.index, &m.normalTexture.extensions}},
+    }};
+    const char* first = nullptr;
+    glm::dmat3 transform(1.0);
+    for (const auto& [slot, reference] : slots) {
+        if (reference.first < 0) continue;
+        const glm::dmat3 own = transformOf(gltf, name + " " + slot, *reference.second);
+        if (!first) {
+            first = slot;
+            transform = own;
+        } else if (own != transform) {
+            gltf.warnOnce(name + ": " + slot + "'s KHR_texture_transform differs from " + first +
+                          "'s, which Strata applies to all its textures (one UV set per primitive)");
+        }
+    }
+    return transform;
+}
 
 Material gltfDefaultMaterial() {
     return metallicRoughnessMaterial("(glTF default)", glm::vec3(1.0f), 1.0f, 1.0f, glm::vec3(0.0f));
@@ -84,9 +185,35 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     }
     const glm::vec3 baseColor(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
     const auto metallic = static_cast<float>(pbr.metallicFactor);
+    // KHR_materials_ior and KHR_materials_specular: a dielectric's reflectance at normal
+    // incidence, ((ior - 1) / (ior + 1))^2 times the specular colour, at most 1, times the factor.
+    float ior = 1.5f;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_ior")) {
+        ior = numberOf(gltf, *e, "ior", 1.5, 1.0, 10.0, name + ": KHR_materials_ior");
+    }
+    // (In double: at ior 1.5 it rounds to the float 0.04 exactly, as the core model's constant.)
+    glm::vec3 dielectricF0(static_cast<float>(std::pow((ior - 1.0) / (ior + 1.0), 2.0)));
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_specular")) {
+        const std::string where = name + ": KHR_materials_specular";
+        const float factor = numberOf(gltf, *e, "specularFactor", 1.0, 0.0, 1.0, where);
+        glm::vec3 colour(1.0f);
+        if (e->Has("specularColorFactor")) {
+            const tinygltf::Value& c = e->Get("specularColorFactor");
+            if (!c.IsArray() || c.ArrayLen() != 3) gltf.fail(where + ": specularColorFactor needs 3 numbers");
+            for (int i = 0; i < 3; ++i) {
+                const float v = c.Get(i).IsNumber() ? static_cast<float>(c.Get(i).GetNumberAsDouble()) : -1.0f;
+                if (!(v >= 0.0f) || !std::isfinite(v)) gltf.fail(where + ": specularColorFactor needs numbers >= 0");
+                colour[i] = v;
+            }
+        }
+        dielectricF0 = glm::min(dielectricF0 * colour, glm::vec3(1.0f)) * factor;
+        if (e->Has("specularTexture") || e->Has("specularColorTexture")) {
+            gltf.warnOnce(where + ": its textures are not applied (the factors are)");
+        }
+    }
     Material material = metallicRoughnessMaterial(
         m.name, baseColor, metallic, static_cast<float>(pbr.roughnessFactor),
-        glm::vec3(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2])));
+        glm::vec3(strength * glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2])), dielectricF0);
 
     MaterialTextures& maps = material.textures;
     maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
@@ -99,7 +226,55 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     maps.normal = textureOf(gltf, textures, name + " normalTexture", m.normalTexture.index, m.normalTexture.texCoord,
                             m.normalTexture.extensions, TextureEncoding::Data);
     maps.normalScale = static_cast<float>(m.normalTexture.scale);
-    if (material.hasReflectanceTextures()) material.metallicRoughness = MetallicRoughness{baseColor, metallic};
+
+    // KHR_materials_transmission: the dielectric part (1 - metallic) transmits this share, through
+    // a dielectric of the material's index and roughness tinted by the base colour;
+    // KHR_materials_volume: a closed volume that absorbs, else (absent, or thickness 0) a thin wall.
+    float transmission = 0.0f;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_transmission")) {
+        const std::string where = name + ": KHR_materials_transmission";
+        transmission = numberOf(gltf, *e, "transmissionFactor", 0.0, 0.0, 1.0, where);
+        maps.transmission = extensionTexture(gltf, textures, *e, "transmissionTexture", name, TextureEncoding::Data);
+    }
+    material.transmission = transmission * (1.0f - metallic);
+    material.ior = ior;
+    material.transmissionFilter = baseColor;
+    material.thinWalled = true;
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_volume")) {
+        const std::string where = name + ": KHR_materials_volume";
+        material.thinWalled = numberOf(gltf, *e, "thicknessFactor", 0.0, 0.0, 1e30, where) == 0.0f;
+        material.attenuationDistance =
+            numberOf(gltf, *e, "attenuationDistance", std::numeric_limits<double>::infinity(), 0.0,
+                     std::numeric_limits<double>::infinity(), where);
+        if (!(material.attenuationDistance > 0.0f)) gltf.fail(where + ": attenuationDistance must be > 0");
+        if (e->Has("attenuationColor")) {
+            const tinygltf::Value& c = e->Get("attenuationColor");
+            if (!c.IsArray() || c.ArrayLen() != 3) gltf.fail(where + ": attenuationColor needs 3 numbers");
+            for (int i = 0; i < 3; ++i) {
+                const float v = c.Get(i).IsNumber() ? static_cast<float>(c.Get(i).GetNumberAsDouble()) : -1.0f;
+                if (!(v >= 0.0f && v <= 1.0f)) gltf.fail(where + ": attenuationColor needs numbers in 0..1");
+                material.attenuationColor[i] = v;
+            }
+        }
+    }
+    if (material.thinWalled && material.transmission > 0.0f && material.roughness > 0.0f) {
+        gltf.warnOnce(name + ": a thin-walled transmission renders smooth (its roughness applies to reflection)");
+    }
+    // KHR_materials_clearcoat: a coat of index 1.5 (F0 0.04) over the material.
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_clearcoat")) {
+        const std::string where = name + ": KHR_materials_clearcoat";
+        material.clearcoat = numberOf(gltf, *e, "clearcoatFactor", 0.0, 0.0, 1.0, where);
+        material.clearcoatRoughness = numberOf(gltf, *e, "clearcoatRoughnessFactor", 0.0, 0.0, 1.0, where);
+        maps.clearcoat = extensionTexture(gltf, textures, *e, "clearcoatTexture", name, TextureEncoding::Data);
+        maps.clearcoatRoughness =
+            extensionTexture(gltf, textures, *e, "clearcoatRoughnessTexture", name, TextureEncoding::Data);
+        if (e->Has("clearcoatNormalTexture")) {
+            gltf.warnOnce(where + ": clearcoatNormalTexture is not applied (the coat takes the base's normal)");
+        }
+    }
+    if (material.hasReflectanceTextures()) {
+        material.metallicRoughness = MetallicRoughness{baseColor, metallic, dielectricF0, transmission};
+    }
 
     double cutoff = m.alphaCutoff;
     if (m.alphaMode == "BLEND") {

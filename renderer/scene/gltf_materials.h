@@ -9,12 +9,26 @@
 //   normalTexture   a tangent-space normal map with its `scale`; the tangents come from the
 //                   UVs (a TANGENT attribute is not read), the bitangent toward +v as the map's +y;
 //   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND is taken
-//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha.
+//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha;
+//   KHR_materials_ior, KHR_materials_specular  the dielectric reflectance at normal incidence,
+//                   ((ior - 1) / (ior + 1))^2 x specularColorFactor (at most 1) x specularFactor
+//                   (their textures are not applied: a warning), and the index of refraction;
+//   KHR_materials_transmission  factor x transmissionTexture's R of the dielectric part
+//                   (1 - metallic) is a dielectric of that index and the material's roughness,
+//                   tinted by the base colour; metallic 1 at roughness 0 is a perfect mirror;
+//   KHR_materials_volume  a closed volume with Beer-Lambert absorption (attenuationColor kept
+//                   after attenuationDistance) where thicknessFactor > 0, else (absent too) a thin
+//                   wall (a rough thin wall transmits smooth: a warning);
+//   KHR_materials_clearcoat  a coat of index 1.5 over the material, factor x clearcoatTexture's R,
+//                   roughness x clearcoatRoughnessTexture's G (clearcoatNormalTexture is not
+//                   applied: a warning).
 // doubleSided needs nothing: Strata reflects on both sides of every triangle. occlusionTexture is
 // not read: a path tracer finds occlusion itself. Only TEXCOORD_0 is read; a texture on another
-// set, and KHR_texture_transform (not applied), are warnings. A texture that is missing or does
-// not decode is a warning and its factor is used alone.
+// set is a warning. KHR_texture_transform's offset, rotation and scale move the UVs of the
+// material's primitives (gltfTextureTransform), and its texCoord overrides the reference's. A
+// texture that is missing or does not decode is a warning and its factor is used alone.
 #include <cstddef>
+#include <glm/mat3x3.hpp>
 
 #include "materials/material.h"
 #include "scene/gltf_model.h"
@@ -24,6 +38,12 @@ namespace strata {
 
 // The material `index` of the model; throws strata::Error naming it for a factor outside its range.
 Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index);
+
+// KHR_texture_transform of the material's textures as a matrix on homogeneous glTF UVs (v down):
+// T * R * S, rotation counter-clockwise in UV space. Strata has one UV set per primitive, so the
+// material's textures share one transform: the first textured slot's (base colour, then
+// metallic-roughness, emissive, normal), with a warning when another slot's differs.
+glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index);
 
 // The material of a primitive without one ("Materials": base colour 1, metallic 1, roughness 1).
 Material gltfDefaultMaterial();

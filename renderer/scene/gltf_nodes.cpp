@@ -110,9 +110,11 @@ public:
     ParsedScene build() {
         for (size_t i = 0; i < gltf_.model.materials.size(); ++i) {
             parsed_.mesh.materials.push_back(gltfMaterial(gltf_, textures_, i));
+            uvTransforms_.push_back(gltfTextureTransform(gltf_, i));
         }
         visitNodes();
         addPrimitives();
+        if (parsed_.mesh.triangles.empty()) refuseEmpty();
         // A flat scene keeps no per-triangle normal indices, one without UVs none (mesh.h).
         if (parsed_.mesh.normals.empty()) parsed_.mesh.triangleNormals.clear();
         if (parsed_.mesh.uvs.empty()) parsed_.mesh.triangleUvs.clear();
@@ -123,6 +125,17 @@ public:
     size_t dropped() const { return dropped_; }
 
 private:
+    // A scene left without triangles, refused by what left it so (else the scene's loader says
+    // it has no usable triangles).
+    void refuseEmpty() const {
+        if (outOfRange_ > 0) fail("every triangle uses an index past its primitive's vertices; nothing is left");
+        if (hasPoints_ || hasLines_) {
+            const char* kinds = hasPoints_ && hasLines_ ? "points and lines" : hasPoints_ ? "points" : "lines";
+            fail(std::string("the file holds only ") + kinds +
+                 ", no surfaces; Strata renders triangles, strips and fans");
+        }
+    }
+
     [[noreturn]] void fail(const std::string& message) const { gltf_.fail(message); }
     void warnOnce(const std::string& message) { gltf_.warnOnce(message); }
     template <typename T>
@@ -165,14 +178,18 @@ private:
     }
 
     // The corners of a primitive's triangles, three by three (glTF 2.0, "Meshes": the topology
-    // of each mode); points and lines have no surface to render.
-    std::vector<uint32_t> triangleCorners(int mode, const std::vector<uint32_t>& vertices,
-                                          const std::string& where) const {
+    // of each mode); vertices that make no whole triangle are left out with a warning, as assimp
+    // does.
+    std::vector<uint32_t> triangleCorners(int mode, std::vector<uint32_t> vertices, const std::string& where) {
         std::vector<uint32_t> corners;
         const size_t n = vertices.size();
         switch (mode) {
             case TINYGLTF_MODE_TRIANGLES:
-                if (n % 3 != 0) fail(where + ": " + std::to_string(n) + " vertices do not make whole triangles");
+                if (n % 3 != 0) {
+                    warnOnce(where + ": " + std::to_string(n) + " vertices do not make whole triangles; the last " +
+                             std::to_string(n % 3) + " left out");
+                    vertices.resize(n - n % 3);
+                }
                 return vertices;
             case TINYGLTF_MODE_TRIANGLE_STRIP:
                 for (size_t i = 0; i + 2 < n; ++i) {
@@ -185,13 +202,23 @@ private:
                     corners.insert(corners.end(), {vertices[i + 1], vertices[i + 2], vertices[0]});
                 }
                 return corners;
-            default: {
-                static const std::array<const char*, 4> names{"points", "lines", "line loop", "line strip"};
-                const std::string name = mode >= 0 && mode < 4 ? names[static_cast<size_t>(mode)] : "unknown";
-                fail(where + ": mode " + std::to_string(mode) + " (" + name +
-                     ") is not a surface; Strata renders triangles, strips and fans");
-            }
+            default:
+                fail(where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode");
         }
+    }
+
+    // Whether the primitive is points or lines, which have no surface to render: skipped with a
+    // warning, and noted for the message of a file that has nothing else.
+    bool skippedAsNoSurface(int mode) {
+        if (mode == TINYGLTF_MODE_POINTS) {
+            hasPoints_ = true;
+        } else if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) {
+            hasLines_ = true;
+        } else {
+            return false;
+        }
+        warnOnce("points and lines are not surfaces; their primitives are skipped");
+        return true;
     }
 
     // The triangles a primitive will have, by its accessors' counts, before any is read; 0 where
@@ -308,6 +335,7 @@ private:
             warnOnce("primitives without POSITION are skipped");
             return;
         }
+        if (skippedAsNoSurface(primitive.mode)) return;
         const std::vector<double> positions = accessorValues(gltf_, position->second, AccessorUse::Position, where);
         const size_t vertexCount = positions.size() / 3;
         std::vector<double> normals;
@@ -327,19 +355,30 @@ private:
                      std::to_string(vertexCount));
             }
         }
+        // An index past the vertices leaves out the triangles that use it, with a warning, as
+        // assimp does (kOutOfRange marks it until the triangles are made).
+        constexpr uint32_t kOutOfRange = std::numeric_limits<uint32_t>::max();
         std::vector<uint32_t> vertices;
         if (primitive.indices >= 0) {
             for (double index : accessorValues(gltf_, primitive.indices, AccessorUse::Index, where)) {
-                if (index >= static_cast<double>(vertexCount)) {
-                    fail(where + ": index " + std::to_string(static_cast<uint64_t>(index)) +
-                         " out of range (" + std::to_string(vertexCount) + " vertices)");
-                }
-                vertices.push_back(static_cast<uint32_t>(index));
+                const bool inRange = index < static_cast<double>(vertexCount);
+                vertices.push_back(inRange ? static_cast<uint32_t>(index) : kOutOfRange);
             }
         } else {
             for (size_t v = 0; v < vertexCount; ++v) vertices.push_back(static_cast<uint32_t>(v));
         }
-        const std::vector<uint32_t> corners = triangleCorners(primitive.mode, vertices, where);
+        const std::vector<uint32_t> made = triangleCorners(primitive.mode, std::move(vertices), where);
+        std::vector<uint32_t> corners;
+        for (auto first = made.begin(); first != made.end(); first += 3) {
+            if (std::find(first, first + 3, kOutOfRange) == first + 3) corners.insert(corners.end(), first, first + 3);
+        }
+        if (corners.size() < made.size()) {
+            const size_t left = (made.size() - corners.size()) / 3;
+            warnOnce(where + ": " + std::to_string(left) + " of " + std::to_string(made.size() / 3) +
+                     (left == 1 ? " triangles uses" : " triangles use") + " an index past its " +
+                     std::to_string(vertexCount) + " vertices; left out");
+            outOfRange_ += left;
+        }
         const uint32_t material = materialOf(primitive.material);
 
         const auto firstVertex = static_cast<uint32_t>(mesh.positions.size());
@@ -357,8 +396,12 @@ private:
             mesh.normals.emplace_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
         }
         const auto firstUv = static_cast<uint32_t>(mesh.uvs.size());
+        // The material's KHR_texture_transform, in glTF's UV coordinates (gltf_materials.h).
+        const glm::dmat3 uvTransform =
+            primitive.material >= 0 ? uvTransforms_[static_cast<size_t>(primitive.material)] : glm::dmat3(1.0);
         for (size_t v = 0; v < texCoords.size() / 2; ++v) {
-            mesh.uvs.emplace_back(static_cast<float>(texCoords[2 * v]), static_cast<float>(1.0 - texCoords[2 * v + 1]));
+            const glm::dvec3 uv = uvTransform * glm::dvec3(texCoords[2 * v], texCoords[2 * v + 1], 1.0);
+            mesh.uvs.emplace_back(static_cast<float>(uv.x), static_cast<float>(1.0 - uv.y));
         }
         for (size_t c = 0; c < corners.size(); c += 3) {
             std::array<uint32_t, 3> corner{corners[c], corners[c + 1], corners[c + 2]};
@@ -405,9 +448,13 @@ private:
     SceneTextures& textures_;
     const SceneBudget& budget_;
     std::vector<MeshNode> meshNodes_;
+    std::vector<glm::dmat3> uvTransforms_;  // by material
     ParsedScene parsed_;
     std::optional<uint32_t> defaultMaterial_;
     size_t dropped_ = 0;
+    size_t outOfRange_ = 0;  // triangles left out for an index past their vertices
+    bool hasPoints_ = false;
+    bool hasLines_ = false;
 };
 
 }  // namespace

@@ -1,7 +1,11 @@
 #include "scene/mesh.h"
 
+#include <cmath>
 #include <limits>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 namespace strata {
 
@@ -50,6 +54,31 @@ uint64_t placedTriangles(const MeshData& mesh) {
     uint64_t placed = mesh.triangles.size();
     for (const SharedMesh& s : mesh.sharedMeshes) placed += (s.placements.size() * s.triangleCount) - s.triangleCount;
     return placed;
+}
+
+double worldArea(const MeshData& mesh) {
+    const auto areaOf = [&](size_t first, size_t end) {
+        double area = 0.0;
+        for (size_t t = first; t < end; ++t) {
+            const auto& c = mesh.triangles[t];
+            const glm::dvec3 p0(mesh.positions[c[0]]);
+            area += 0.5 * glm::length(glm::cross(glm::dvec3(mesh.positions[c[1]]) - p0,
+                                                 glm::dvec3(mesh.positions[c[2]]) - p0));
+        }
+        return area;
+    };
+    double area = 0.0;
+    size_t worldFirst = 0;
+    for (const SharedMesh& shared : mesh.sharedMeshes) {
+        area += areaOf(worldFirst, shared.firstTriangle);
+        worldFirst = shared.firstTriangle + size_t{shared.triangleCount};
+        const double local = areaOf(shared.firstTriangle, worldFirst);
+        for (const glm::mat4& placement : shared.placements) {
+            const double determinant = std::abs(static_cast<double>(glm::determinant(glm::mat3(placement))));
+            area += local * std::pow(determinant, 2.0 / 3.0);
+        }
+    }
+    return area + areaOf(worldFirst, mesh.triangles.size());
 }
 
 }  // namespace strata

@@ -76,4 +76,10 @@ std::pair<glm::vec3, glm::vec3> worldBounds(const MeshData& mesh);
 // The triangles of the mesh's world: those not shared, and each shared mesh's times its placements.
 uint64_t placedTriangles(const MeshData& mesh);
 
+// The area of the mesh's world: its world triangles', and each shared mesh's at each placement,
+// scaled by the placement's |determinant|^(2/3). That is exact for a placement that scales
+// uniformly (with any rotation, mirroring and translation) and an estimate for one that does not,
+// which would take every placed triangle: it costs the stored triangles and the placements only.
+double worldArea(const MeshData& mesh);
+
 }  // namespace strata

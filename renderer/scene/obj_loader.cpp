@@ -101,19 +101,55 @@ std::optional<std::array<long, 3>> faceCorner(std::string_view word) {
     throw Error(name + ":" + std::to_string(line) + ": " + message);
 }
 
-// A UTF-8 text without its byte-order mark; UTF-16 (which some Windows tools write) is refused
-// by name, where it would otherwise read as lines of unknown statements.
-std::string_view withoutByteOrderMark(const std::string& text, const std::string& name) {
-    const std::string_view view(text);
+// UTF-16 text after its byte-order mark (big-endian or little-endian) as UTF-8; an unpaired
+// surrogate becomes U+FFFD, as decoders replace what they cannot decode.
+std::string utf8OfUtf16(std::string_view bytes, bool bigEndian, const std::string& name) {
+    if (bytes.size() % 2 != 0) throw Error(name + ": UTF-16 text of an odd number of bytes");
+    const auto unit = [&](size_t i) {
+        const auto hi = static_cast<unsigned char>(bytes[bigEndian ? i : i + 1]);
+        const auto lo = static_cast<unsigned char>(bytes[bigEndian ? i + 1 : i]);
+        return static_cast<uint32_t>(hi << 8 | lo);
+    };
+    std::string text;
+    text.reserve(bytes.size() / 2);
+    for (size_t i = 0; i < bytes.size(); i += 2) {
+        uint32_t c = unit(i);
+        if (c >= 0xD800 && c < 0xDC00 && i + 2 < bytes.size() && unit(i + 2) >= 0xDC00 && unit(i + 2) < 0xE000) {
+            c = 0x10000 + ((c - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
+            i += 2;
+        } else if (c >= 0xD800 && c < 0xE000) {
+            c = 0xFFFD;
+        }
+        if (c < 0x80) {
+            text += static_cast<char>(c);
+        } else if (c < 0x800) {
+            text += {static_cast<char>(0xC0 | c >> 6), static_cast<char>(0x80 | (c & 0x3F))};
+        } else if (c < 0x10000) {
+            text += {static_cast<char>(0xE0 | c >> 12), static_cast<char>(0x80 | (c >> 6 & 0x3F)),
+                     static_cast<char>(0x80 | (c & 0x3F))};
+        } else {
+            text += {static_cast<char>(0xF0 | c >> 18), static_cast<char>(0x80 | (c >> 12 & 0x3F)),
+                     static_cast<char>(0x80 | (c >> 6 & 0x3F)), static_cast<char>(0x80 | (c & 0x3F))};
+        }
+    }
+    return text;
+}
+
+// The file as UTF-8 text without its byte-order mark: UTF-16 with one (which some Windows tools
+// write, as assimp's box_UTF16BE.obj is) decoded into `decoded`, else the file itself.
+std::string_view utf8TextOf(const std::string& file, const std::string& name, std::string& decoded) {
+    const std::string_view view(file);
     if (view.substr(0, 2) == "\xFE\xFF" || view.substr(0, 2) == "\xFF\xFE") {
-        throw Error(name + ": the file is UTF-16 text; save it as UTF-8 or ASCII");
+        decoded = utf8OfUtf16(view.substr(2), view[0] == '\xFE', name);
+        return decoded;
     }
     return view.substr(0, 3) == "\xEF\xBB\xBF" ? view.substr(3) : view;
 }
 
 template <typename Visit>
 void forEachLine(const std::string& file, const std::string& name, Visit visit) {
-    const std::string_view text = withoutByteOrderMark(file, name);
+    std::string decoded;
+    const std::string_view text = utf8TextOf(file, name, decoded);
     size_t lineNumber = 0;
     size_t start = 0;
     while (start <= text.size()) {
@@ -188,6 +224,8 @@ struct ObjScan {
     std::vector<glm::vec3> normals;
     size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
     uint64_t triangles = 0;              // the faces' once triangulated (as fans)
+    size_t vertices = 0;
+    bool hasLines = false;               // l statements
     std::vector<std::string> warnings;
 };
 
@@ -225,6 +263,8 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
                     checkIndex(name, line, (*corner)[2], scan.normals.size(), "normal", "normals");
                 }
             }
+        } else if (key == "l") {
+            scan.hasLines = true;
         } else if (key == "mtllib") {
             if (words.size() < 2) {
                 scan.warnings.push_back(name + ":" + std::to_string(line) + ": mtllib names no file");
@@ -232,7 +272,16 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
             for (size_t i = 1; i < words.size(); ++i) scan.libraries.push_back({std::string(words[i]), line});
         }
     });
+    scan.vertices = vertices;
     return scan;
+}
+
+// A file of vertices (a point cloud, p statements) or lines but no face has nothing to render:
+// refused by what it holds rather than as a scene without triangles.
+void refuseWithoutFaces(const ObjScan& scan, const std::string& name) {
+    if (scan.triangles > 0 || scan.vertices == 0) return;
+    throw Error(name + ": the file holds only " + (scan.hasLines ? "lines" : "points") + " (" +
+                std::to_string(scan.vertices) + " vertices, no faces); Strata renders faces");
 }
 
 // Appends a line as the checks read it: its words, without the comment.
@@ -249,6 +298,9 @@ struct MtlMaterial {
     // 0, which cannot be told from an explicit 0).
     bool hasRoughness = false;
     bool hasEmission = false;  // whether it has a Ke line
+    bool hasIor = false;       // an Ni line (tinyobjloader reads an absent one as 1)
+    bool hasFilter = false;    // a Tf line
+    size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
         std::string key;
         MtlTextureStatement statement;
@@ -264,7 +316,7 @@ std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
 // tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
-// uses are checked; the others (Ka, Tf, Ni, d, illum, ...) pass as they are. The texture
+// uses are checked; the others (Ka, d, Tr, ...) pass as they are. The texture
 // statements Strata reads (mtl_texture_statement.h) are kept with their material instead, and
 // one that names no file is a warning.
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
@@ -280,8 +332,8 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             material.line = line;
             return;
         }
-        const bool colour = key == "Kd" || key == "Ke" || key == "Ks";
-        const bool scalar = key == "Ns" || key == "Pr";
+        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf";
+        const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum";
         const bool texture = isMtlTextureKey(key);
         if ((colour || scalar || texture) && materials.size() == first) {
             failAt(name, line, "'" + std::string(key) + "' before any newmtl");
@@ -296,10 +348,16 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             }
             return;
         }
+        if (key == "Tf" && words.size() > 1 && (words[1] == "xyz" || words[1] == "spectral")) {
+            materials.back().unreadFilterLine = line;
+            return;
+        }
         if (colour) checkNumbers(name, line, words, 1, 3);
         if (scalar) checkNumbers(name, line, words, 1, 1);
         if (key == "Pr") materials.back().hasRoughness = true;
         if (key == "Ke") materials.back().hasEmission = true;
+        if (key == "Ni") materials.back().hasIor = true;
+        if (key == "Tf") materials.back().hasFilter = true;
         appendLine(tinyobjText, words);
     });
 }
@@ -344,7 +402,14 @@ bool isFinite(const glm::vec3& v) {
 }
 
 // The renderer's material of an MTL material as tinyobjloader read it; throws strata::Error
-// naming its newmtl line for values that are not physical.
+// naming its newmtl line for values that are not physical. The illumination models that ask for
+// ray-traced refraction or reflection (MTL specification, "illum"):
+//   illum 4, 6, 7   a dielectric of index Ni (1.5 when absent), transmission filter Tf (1 1 1
+//                   when absent) and roughness Pr (0, smooth, when absent; GGX alpha = Pr^2);
+//                   its Kd and Ks are not used (its reflection is the interface's Fresnel);
+//   illum 3, 5      with Ks, and Pr 0 (or no Pr and Ns >= 10000): a perfect mirror of F0 = Ks
+//                   (with Kd as well: a smooth Ks coat over Kd).
+// Every other illum is the layered material of Kd, Ks and Pr (or Ns).
 Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     Material material;
     material.name = source.name;
@@ -368,6 +433,24 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
         throw Error(at + " has Ks above 1 (creates energy)");
     }
     if (material.roughness < 0.0f || material.roughness > 1.0f) throw Error(at + " has Pr outside 0..1");
+    if (m.illum == 4 || m.illum == 6 || m.illum == 7) {
+        material.transmission = 1.0f;
+        material.diffuse = glm::vec3(0.0f);
+        material.specular = glm::vec3(0.0f);
+        material.ior = source.hasIor ? m.ior : 1.5f;
+        if (source.hasFilter) material.transmissionFilter = {m.transmittance[0], m.transmittance[1], m.transmittance[2]};
+        material.roughness = source.hasRoughness ? m.roughness : 0.0f;
+        if (!(material.ior > 0.0f) || !std::isfinite(material.ior)) {
+            throw Error(at + " (illum " + std::to_string(m.illum) + ", a dielectric) has an Ni that is not a positive number");
+        }
+        const glm::vec3& tf = material.transmissionFilter;
+        if (!isFinite(tf) || glm::min(glm::min(tf.x, tf.y), tf.z) < 0.0f || glm::max(glm::max(tf.x, tf.y), tf.z) > 1.0f) {
+            throw Error(at + " has a Tf outside 0..1");
+        }
+    } else if ((m.illum == 3 || m.illum == 5) && glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 0.0f &&
+               (source.hasRoughness ? m.roughness == 0.0f : m.shininess >= 10000.0f)) {
+        material.roughness = 0.0f;
+    }
     return material;
 }
 
@@ -453,6 +536,10 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     SceneTextures textures(bundle, warnings, TextureBudget(budget.textureBytes));
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
+        if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
+            warnings.push_back(materials[i].file + ":" + std::to_string(materials[i].unreadFilterLine) +
+                               ": Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1");
+        }
         addTextures(mesh.materials.back(), materials[i], mtlNames[i], textures, warnings);
     }
     // vt u v as they are (texture.h's convention is OBJ's); the w of 3D texture coordinates
@@ -533,6 +620,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     }
     if (defaultUsed) mesh.materials.push_back({"default", glm::vec3(kDefaultAlbedo), glm::vec3(0.0f)});
     // No triangle is smooth: the mesh says so by having no normals at all (mesh.h).
+    refuseWithoutFaces(scan, objName);
     if (!anySmooth) {
         mesh.normals.clear();
         mesh.triangleNormals.clear();

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +11,7 @@
 #include <glm/matrix.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "geometry/rounding.h"
 #include "materials/normal_map.h"
 #include "util/error.h"
 
@@ -21,27 +21,6 @@ namespace {
 void reportEmbreeError(void*, RTCError code, const char* message) {
     // Embree calls this for API misuse; such a failure is a bug, so say it loudly.
     std::fprintf(stderr, "embree error %d: %s\n", static_cast<int>(code), message ? message : "");
-}
-
-// Higham's gamma(n) = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations.
-constexpr float gammaBound(int n) {
-    constexpr float u = 0x1p-24f;
-    return (static_cast<float>(n) * u) / (1.0f - static_cast<float>(n) * u);
-}
-
-float maxComponent(const glm::vec3& v) { return glm::max(glm::max(v.x, v.y), v.z); }
-
-// std::nextafter(x, +-infinity) for finite x, inlined: the libm call was a measurable share of a
-// bounce (three per ray origin). Stepping the bit pattern moves one ulp away from zero for
-// positive x when `up` (toward zero when not), as nextafter does; zero steps to +-denorm_min.
-float nextFloat(float x, bool up) {
-    const uint32_t bits = std::bit_cast<uint32_t>(x);
-    if ((bits & 0x7fffffffu) == 0) {
-        const float tiny = std::numeric_limits<float>::denorm_min();
-        return up ? tiny : -tiny;
-    }
-    const bool awayFromZero = (bits >> 31 == 0) == up;
-    return std::bit_cast<float>(awayFromZero ? bits + 1 : bits - 1);
 }
 
 }  // namespace
@@ -258,6 +237,7 @@ LightDescriptions lightDescriptions(const MeshData& mesh, const std::pair<glm::v
     lights.environment = mesh.environment;
     const auto& [lower, upper] = bounds;
     lights.sceneRadius = mesh.positions.empty() ? 0.0f : 0.5f * glm::length(upper - lower);
+    lights.surfaceArea = worldArea(mesh);
     return lights;
 }
 
@@ -515,7 +495,7 @@ void Scene::occluded(std::span<const Ray> rays, std::span<const float> distances
     const glm::vec3 terms = magnitude * glm::abs(local) + glm::abs(translation);
     const float reach = glm::max(maxComponent(glm::abs(hit.point)), maxComponent(glm::abs(translation)));
     hit.pointError = gammaBound(3) * terms + (1.0f + gammaBound(3)) * (magnitude * hit.pointError) +
-                     glm::vec3(gammaBound(4) * reach);
+                     traversalError(reach);
     // Normals by the inverse transpose, which keeps the front side under a mirroring map (mesh.h).
     hit.normal = glm::normalize(placement.normalToWorld * hit.normal);
     hit.shadingNormal = hit.smooth ? glm::normalize(placement.normalToWorld * hit.shadingNormal) : hit.normal;
@@ -541,19 +521,11 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     const glm::vec3 weighted2 = b2 * p2;
     SurfaceHit hit;
     hit.point = weighted0 + weighted1 + weighted2;
-    // Rounding of the barycentric sum (pbrt-v4's bound), plus Embree's own error: both its tests
-    // work relative to the ray origin (the watertight one in sheared coordinates that mix all
-    // three axes), so a ray leaving a plane such as x = 0 can find that plane again at t ~ 0
-    // unless the origin clears it by a few ulp of the triangle's largest coordinate (translating
-    // the vertices by the origin and shearing them each round once per axis: about 3 u; the fast
-    // test is kept to the scenes where that suffices, traversal_precision.h). gamma(4) covers
-    // that, and no more: a much larger bound, gamma(16), at 1e6 from the origin pushes new rays
-    // about 1 unit off the surface, out through the wall of a unit furnace
-    // (tests/scene/test_scene_robustness.cpp: no re-hit in 320k spawned rays even with gamma(1),
-    // 122 in 20k with no such term).
+    // Rounding of the barycentric sum (pbrt-v4's bound), plus Embree's own error (rounding.h; the
+    // fast test is kept to the scenes where that suffices, traversal_precision.h).
     const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
     hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
-                     glm::vec3(gammaBound(4) * maxComponent(largest));
+                     traversalError(maxComponent(largest));
     // Component by component: copied whole, GCC 12 moves normal.z and the next field as one
     // 8-byte word through the stack, a load that store-to-load forwarding cannot serve (a stall
     // perf annotate showed on every ray, ~6% of the path tracer's time).
@@ -603,19 +575,7 @@ bool Scene::occluded(const Ray& ray, float distance) const {
 }
 
 glm::vec3 offsetRayOrigin(const SurfaceHit& hit, const glm::vec3& direction) {
-    const float distance = glm::dot(glm::abs(hit.normal), hit.pointError);
-    glm::vec3 offset = distance * hit.normal;
-    if (glm::dot(direction, hit.normal) < 0.0f) offset = -offset;
-    glm::vec3 origin = hit.point + offset;
-    // Round away from the surface, so the addition itself cannot land back on it.
-    for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0.0f) {
-            origin[i] = nextFloat(origin[i], true);
-        } else if (offset[i] < 0.0f) {
-            origin[i] = nextFloat(origin[i], false);
-        }
-    }
-    return origin;
+    return offsetRayOrigin(hit.point, hit.pointError, hit.normal, direction);
 }
 
 }  // namespace strata

@@ -2,8 +2,8 @@
 // The scene description: NAME.json beside the scene file NAME.EXT (of any format), with what the
 // scene's geometry does not say. Every key is optional; unknown keys are ignored so that later
 // versions can add their own.
-//   camera: "position", "look_at", "up": [x,y,z], "fov_y": degrees (all four, or none: the camera
-//           then frames the scene), "width", "height": the image size in pixels (default 256)
+//   camera: "position", "look_at", "up": [x,y,z], "fov_y": degrees (all four, or none: the
+//           default camera, default_camera.h), "width", "height": the image size in pixels (default 256)
 //   "lights": [{"type": "point", "position": [x,y,z], "intensity": [r,g,b]}]   intensity in W/sr
 //   "point_lights": [{"position": [x,y,z], "intensity": [r,g,b]}]   point lights, the older key
 //   "environment": what rays that leave the scene see (lights/environment.h): "none",

@@ -10,9 +10,11 @@
 namespace strata {
 namespace {
 
-// An OBJ carries no camera.
+// An OBJ carries no camera, and states no axes: its orientation is read from the model.
 ParsedScene parseObjFormat(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget) {
-    return {parseObjScene(bundle, report, budget), std::nullopt};
+    ParsedScene parsed{parseObjScene(bundle, report, budget), std::nullopt};
+    parsed.orientation = objOrientation(parsed.mesh);
+    return parsed;
 }
 
 // Every format Strata reads. A new one is its loader and one line here.
@@ -24,13 +26,14 @@ const std::vector<SceneFormat>& sceneFormats() {
     return formats;
 }
 
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 }  // namespace
+
+std::string lowerCaseExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
 
 const SceneFile* SceneBundle::find(std::string_view name) const {
     const auto it = std::find_if(files.begin(), files.end(),
@@ -44,7 +47,7 @@ std::string SceneBundle::pathOf(const std::string& name) const {
 
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path) {
     const std::string extension = path.extension().string();
-    const std::string wanted = lowerCase(extension);
+    const std::string wanted = lowerCaseExtension(path);
     for (const SceneFormat& format : sceneFormats()) {
         for (std::string_view known : format.extensions) {
             if (known == wanted) return format;
@@ -55,13 +58,19 @@ const SceneFormat& sceneFormatOf(const std::filesystem::path& path) {
     throw Error(path.string() + ": unknown scene format '" + extension + "'" + known);
 }
 
+std::vector<std::string_view> sceneExtensions() {
+    std::vector<std::string_view> extensions;
+    for (const SceneFormat& format : sceneFormats()) {
+        extensions.insert(extensions.end(), format.extensions.begin(), format.extensions.end());
+    }
+    return extensions;
+}
+
 std::string knownSceneExtensions() {
     std::string known;
-    for (const SceneFormat& format : sceneFormats()) {
-        for (std::string_view extension : format.extensions) {
-            if (!known.empty()) known += ", ";
-            known += extension;
-        }
+    for (std::string_view extension : sceneExtensions()) {
+        if (!known.empty()) known += ", ";
+        known += extension;
     }
     return known;
 }

@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include "scene/mesh.h"
 #include "textures/texture_budget.h"
+#include "scene/model_orientation.h"
 
 namespace strata {
 
@@ -58,10 +59,12 @@ struct TriangleCount {
 void checkTriangleBudget(const std::string& path, const TriangleCount& count, const SceneBudget& budget);
 
 // What a format's parse gives: the mesh and, for a format that carries cameras (glTF), the pose
-// of the scene's own camera, which the scene takes when no description or --camera file gives one.
+// of the scene's own camera, which the scene takes when no description or --camera file gives one;
+// and the model's orientation, which the default camera takes otherwise (default_camera.h).
 struct ParsedScene {
     MeshData mesh;
     std::optional<CameraPose> camera;
+    ModelOrientation orientation = kGltfOrientation;
 };
 
 struct SceneFile {
@@ -81,6 +84,10 @@ struct SceneBundle {
     std::optional<SceneFile> description;
     // The --camera file, when one was given, named as given: it need not lie in the folder.
     std::optional<SceneFile> camera;
+    // The environment map a front end was given in place of the description's (strata's --env),
+    // named as given. parseScene leaves it to that front end, which holds its other settings
+    // (the rotation); it travels here so that every MPI rank decodes the bytes rank 0 read.
+    std::optional<SceneFile> environmentMap = std::nullopt;
 
     // The file of that name among `files`; null when there is none.
     const SceneFile* find(std::string_view name) const;
@@ -103,6 +110,14 @@ struct SceneFormat {
 // "PATH: unknown scene format '.EXT' (known: .obj, .gltf, .glb)" for one that is not in the table (and names
 // the known ones too when there is no extension).
 const SceneFormat& sceneFormatOf(const std::filesystem::path& path);
+
+// The extension of `path` in lower case, with the dot, as formats are told by it:
+// "ROOM.OBJ" -> ".obj".
+std::string lowerCaseExtension(const std::filesystem::path& path);
+
+// The registered extensions, lower case with the dot, in the table's order: what a file chooser
+// lists as scene files.
+std::vector<std::string_view> sceneExtensions();
 
 // The registered extensions for messages and help: ".obj, .gltf, .glb".
 std::string knownSceneExtensions();

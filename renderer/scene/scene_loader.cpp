@@ -3,26 +3,14 @@
 #include <cstdio>
 #include <string>
 #include <system_error>
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
+#include "scene/default_camera.h"
 #include "scene/scene_description.h"
 #include "util/error.h"
 #include "util/text_file.h"
 
 namespace strata {
 namespace {
-
-// A view down -z onto the bounding box, far enough to see all of it.
-CameraPose framingPose(const Scene& scene) {
-    const glm::vec3 centre = 0.5f * (scene.boundsMin() + scene.boundsMax());
-    const float radius = 0.5f * glm::length(scene.boundsMax() - scene.boundsMin());
-    CameraPose pose;
-    pose.fovYDegrees = 40.0f;
-    pose.lookAt = centre;
-    pose.position = centre + glm::vec3(0.0f, 0.0f, 3.0f * glm::max(radius, 1e-3f));
-    return pose;
-}
 
 bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::error_code error;
@@ -53,6 +41,10 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
 
 SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath) {
+    if (std::filesystem::is_directory(path)) {
+        throw Error(path.string() + ": is a folder, not a scene file (give one of its " + knownSceneExtensions() +
+                    " files)");
+    }
     if (!std::filesystem::is_regular_file(path)) {
         throw Error(path.string() + ": no such scene file");
     }
@@ -77,7 +69,9 @@ SceneBundle readSceneBundle(const std::filesystem::path& path,
     return bundle;
 }
 
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget) {
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudget& budget,
+                       const std::function<void(ParseStage)>& onStage) {
+    if (onStage) onStage(ParseStage::Parsing);
     LoadReport report;
     ParsedScene parsed = parseSceneFile(bundle, &report, budget);
     MeshData& mesh = parsed.mesh;
@@ -101,8 +95,10 @@ LoadedScene parseScene(SceneBundle bundle, Traversal traversal, const SceneBudge
         mesh.pointLights.insert(mesh.pointLights.end(), cameraFile.pointLights.begin(),
                                 cameraFile.pointLights.end());
     }
+    if (onStage) onStage(ParseStage::Building);
     Scene scene(std::move(mesh), traversal);
-    if (!posed) settings.pose = parsed.camera ? *parsed.camera : framingPose(scene);
+    // The mesh as the scene keeps it: its triangles turned to agree with their normals.
+    if (!posed) settings.pose = parsed.camera ? *parsed.camera : defaultCameraPose(scene.mesh(), parsed.orientation);
     return LoadedScene{std::move(scene), settings, report, std::move(bundle)};
 }
 

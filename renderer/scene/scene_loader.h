@@ -2,6 +2,7 @@
 // A scene as users give it: a scene file of a registered format (scene_format.h), the files it
 // refers to, and the scene description NAME.json beside it (scene_description.h).
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,20 +24,27 @@ struct LoadedScene {
 // Reads the scene's files: the scene file `path` and those it refers to, the scene description
 // NAME.json beside it when there is one (and the files it refers to), and the camera file when
 // given. Throws strata::Error naming a missing or malformed file; for a file that is not there,
-// "PATH: no such scene file", else for an extension no format has,
+// "PATH: no such scene file" ("PATH: is a folder, ..." for a folder), else for an extension no format has,
 // "PATH: unknown scene format '.EXT' (known: ...)", before any file is read.
 SceneBundle readSceneBundle(const std::filesystem::path& path,
                             const std::optional<std::filesystem::path>& cameraPath = std::nullopt);
 
+// The two stages of parseScene, for a progress line: the format's parse (with the description
+// and camera files), then the Scene itself (its lights and Embree's BVH build).
+enum class ParseStage { Parsing, Building };
+
 // Builds the scene from its files (from readSceneBundle, here or on another MPI rank): the mesh
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
-// own (glTF), else framing the scene; `traversal` picks Embree's triangle test
+// own (glTF), else the default camera (default_camera.h); `traversal` picks Embree's triangle test
 // (traversal_precision.h); the textures and the description's environment map are decoded
 // within `budget`. Throws strata::Error naming the bad file, or the budget the scene exceeds
 // (scene_format.h): its triangles before its geometry is read, the texture or map that would go
-// over it before that is decoded.
-LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic, const SceneBudget& budget = {});
+// over it before that is decoded. `onStage`, when given, is called as each stage begins; an
+// exception it throws ends the parse there (how the viewer cancels a load between stages).
+LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic,
+                       const SceneBudget& budget = {},
+                       const std::function<void(ParseStage)>& onStage = {});
 
 // readSceneBundle then parseScene.
 LoadedScene loadScene(const std::filesystem::path& path,

@@ -1,12 +1,18 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stb_image.h>
 
+#include "film/backdrop.h"
+#include "io/image_io.h"
+#include "io/tonemap.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -176,6 +182,70 @@ TEST_CASE("cli: a scene with no light is lit by a white sky, and says so; --env-
     CHECK(nlohmann::json::parse(coloured.out)["mean_rgb"][1].get<double>() == doctest::Approx(2.0).epsilon(1e-6));
 }
 
+TEST_CASE("cli: the PNG is filmic at the first pass's exposure by default, --tonemap clamp and --exposure fix it") {
+    const auto dir = test::scratchDir("cli-display");
+    // The grey square of albedo 0.5 filling the view under the default sky: every pixel reads 0.5.
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20})";
+    const std::string render = "render " + (dir / "grey.obj").string() + " --sampler cosine --no-nee --depth 2 "
+                               "--spp 24 --width 4 --height 4 --json --out " + (dir / "out.png").string();
+    const auto pngByte = [&](const std::string& options) {
+        const auto result = test::runStrata(render + options);
+        REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+        int width = 0, height = 0, channels = 0;
+        unsigned char* pixels = stbi_load((dir / "out.png").c_str(), &width, &height, &channels, 3);
+        REQUIRE(pixels != nullptr);
+        const int byte = pixels[0];
+        for (int i = 0; i < 3 * width * height; ++i) CHECK(pixels[i] == byte);
+        stbi_image_free(pixels);
+        return std::pair{byte, nlohmann::json::parse(result.out)};
+    };
+    // The key 0.18 for a luminance of 0.5, through ACES (Narkowicz's fit).
+    const float stops = std::log2(0.18f / 0.5f);
+    const auto [filmic, report] = pngByte("");
+    CHECK(report["tonemap"] == "aces");
+    CHECK(report["exposure"].get<double>() == doctest::Approx(stops).epsilon(1e-4));
+    CHECK(filmic == toByte(encodeSrgb(applyTonemap(glm::vec3(0.5f), stops, Tonemap::Aces).x)));
+    // Today's display: the linear radiance clamped, exposure 0.
+    const auto [clamped, clampReport] = pngByte(" --tonemap clamp");
+    CHECK(clamped == toByte(encodeSrgb(0.5f)));
+    CHECK(clampReport["exposure"] == 0.0);
+    CHECK(pngByte(" --exposure 1").first == toByte(encodeSrgb(applyTonemap(glm::vec3(0.5f), 1.0f, Tonemap::Aces).x)));
+    CHECK(pngByte(" --tonemap clamp --exposure 0.5").first == toByte(encodeSrgb(std::min(1.0f, 0.5f * std::sqrt(2.0f)))));
+    CHECK(test::runStrata(render).err.find("note: PNG exposure -1.47 stops, from the first pass") != std::string::npos);
+}
+
+TEST_CASE("cli: under the default sky camera rays that miss show the backdrop, and the EXR's alpha says where") {
+    const auto dir = test::scratchDir("cli-backdrop");
+    // A small grey square in the middle of the view, the rest sky.
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":60})";
+    const std::string exr = (dir / "out.exr").string();
+    const std::string render = "render " + (dir / "grey.obj").string() +
+                               " --sampler cosine --no-nee --depth 2 --spp 24 --width 16 --height 16 --out " + exr;
+    const auto corner = [&](const std::string& options) {
+        const auto result = test::runStrata(render + options);
+        REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+        const Image image = readExr(exr);
+        REQUIRE(image.alpha.size() == 256);
+        CHECK(image.alpha[0] == 0.0f);             // the corner sees sky
+        CHECK(image.alpha[8 * 16 + 8] == 1.0f);    // the centre the square
+        CHECK(image.pixels[8 * 16 + 8].y == doctest::Approx(0.5f).epsilon(1e-6));
+        return image.pixels[0];
+    };
+    // The top-left pixel of the grey gradient, between its top and the next row's.
+    const float top = corner("").y;
+    CHECK(top < Backdrop::kGradientTop);
+    CHECK(top > Backdrop::kGradientTop + (Backdrop::kGradientBottom - Backdrop::kGradientTop) / 16.0f);
+    CHECK(corner(" --background env") == glm::vec3(1.0f));
+    CHECK(corner(" --background 0.25,0,1") == glm::vec3(0.25f, 0.0f, 1.0f));
+    // A sky the user gives is seen as it is, unless --background says otherwise.
+    CHECK(corner(" --env-color 1 1 1") == glm::vec3(1.0f));
+    CHECK(corner(" --env-color 1 1 1 --background gradient").y == top);
+}
+
 TEST_CASE("cli: --epsilon picks the depth from the truncation bound") {
     const auto result = test::runStrata("render " + furnace() + " --epsilon 1e-3 --spp 24 --json");
     REQUIRE(result.exitCode == 0);
@@ -233,4 +303,36 @@ TEST_CASE("cli: the load summary names the triangle test; --watertight forces th
     REQUIRE(forced.exitCode == 0);
     CHECK(forced.err.find("watertight triangle test") != std::string::npos);
     CHECK(std::abs(nlohmann::json::parse(forced.out)["mean_rgb"][0].get<double>() - 1.875) < 0.01 * 1.875);
+}
+
+TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is named with the one meant") {
+    const auto dir = test::scratchDir("cli-exit");
+    std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 zero\n";
+    struct Case {
+        std::string arguments;
+        int exitCode;
+        std::string says;
+    };
+    const std::vector<Case> cases = {
+        {"render " + furnace() + " --sp 24", 2, "strata: unknown option '--sp'; did you mean '--spp'? (see strata render --help)"},
+        {"render " + furnace() + " --env-colour 1 1 1", 2, "unknown option '--env-colour'; did you mean '--env-color'?"},
+        {"render " + furnace() + " --nonsense-option", 2, "unknown option '--nonsense-option' (see strata render --help)"},
+        {"render " + furnace() + " --spp -5", 2, "--spp: must be a positive multiple of 24"},
+        {"render " + furnace() + " --width 0", 2, "--width: must be in 1..65536"},
+        {"render " + furnace() + " --spp many", 2, "--spp"},
+        {"samples --passes 0", 2, "--passes"},
+        {"frobnicate", 2, "unknown command 'frobnicate'"},
+        {"render " + (dir / "absent.obj").string(), 1, "absent.obj: no such scene file"},
+        {"render " + dir.string(), 1, "is a folder, not a scene file"},
+        {"render " + (dir / "bad.obj").string(), 1, "bad.obj:2"},
+    };
+    for (const auto& c : cases) {
+        const auto result = test::runStrata(c.arguments);
+        INFO("strata " << c.arguments << "\n-> exit " << result.exitCode << ", stderr: " << result.err);
+        CHECK(result.exitCode == c.exitCode);
+        CHECK(lineCount(result.err) == 1);
+        CHECK(result.err.find(c.says) != std::string::npos);
+    }
+    // --help says so.
+    CHECK(test::runStrata("--help").out.find("2 bad usage") != std::string::npos);
 }

@@ -130,7 +130,9 @@ TEST_CASE("install: the .deb holds the program and its scenes and depends on the
     REQUIRE_MESSAGE(contents.exitCode == 0, contents.err);
     for (const char* file : {"./usr/bin/strata", "./usr/share/strata/NOTICE", "./usr/share/strata/cornell/cornell.obj",
                              "./usr/share/strata/cornell/cornell.mtl", "./usr/share/strata/cornell/cornell.json",
-                             "./usr/share/strata/furnace/furnace.obj", "./usr/share/strata/glossy/glossy.obj"}) {
+                             "./usr/share/strata/furnace/furnace.obj", "./usr/share/strata/glossy/glossy.obj",
+                             "./usr/share/doc/strata/copyright", "./usr/share/doc/strata/changelog.gz",
+                             "./usr/share/man/man1/strata.1.gz"}) {
         CHECK_MESSAGE(contents.out.find(std::string(" ") + file + "\n") != std::string::npos, std::string(file));
     }
     CHECK(contents.out.find("readme") == std::string::npos);
@@ -142,6 +144,23 @@ TEST_CASE("install: the .deb holds the program and its scenes and depends on the
     };
     CHECK(field("Package") == "strata\n");
     CHECK(field("Section") == "graphics\n");
+    // The project maintains it, and it says what the program reads.
+    CHECK(field("Maintainer").rfind("Strata developers <", 0) == 0);
+    CHECK(field("Description").find("OBJ and glTF 2.0 scenes") != std::string::npos);
+    // Debian's machine-readable copyright format, with Strata's own licence status.
+    const auto copyright =
+        test::runCommand("dpkg-deb --fsys-tarfile " + deb.string() + " | tar -xO ./usr/share/doc/strata/copyright");
+    REQUIRE(copyright.exitCode == 0);
+    CHECK(copyright.out.rfind("Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/\n"
+                              "Upstream-Name: Strata\n", 0) == 0);
+    CHECK(copyright.out.find("\nFiles: *\nCopyright: 2026 Seed bb8e34dd maintainers\nLicense: no-licence-stated\n") !=
+          std::string::npos);
+    // Lintian finds nothing, down to its pedantic and experimental tags.
+    REQUIRE_MESSAGE(std::system("command -v lintian >/dev/null 2>&1") == 0,
+                    "lintian is missing (scripts/setup.sh installs it)");
+    const auto lintian = test::runCommand("lintian --pedantic --info --display-experimental " + deb.string());
+    CHECK_MESSAGE(lintian.exitCode == 0, lintian.out << lintian.err);
+    CHECK_MESSAGE(lintian.out.empty(), lintian.out);
     const std::string depends = field("Depends");
     MESSAGE("Depends: " << depends);
     // Each entry is "package" or "package (>= version)"; dpkg-shlibdeps found them from the links,

@@ -97,7 +97,7 @@ TEST_CASE("mpi render: a failing rank ends the job with one clear error and no o
     const auto oneRank =
         test::runCommand(mpirun() + " -np 1 " + strataBinary() + " " + arguments + " : -np 1 " +
                          strataBinary() + " " + arguments + " --tonemap bogus");
-    CHECK(oneRank.exitCode != 0);
+    CHECK(oneRank.exitCode == 2);  // bad usage, on every rank: the status rank 0 gives
     CHECK(occurrences(oneRank.err, "strata: rank 1 of 2: --tonemap: unknown tonemap 'bogus'") == 1);
     CHECK(!std::filesystem::exists(out));
 
@@ -105,9 +105,49 @@ TEST_CASE("mpi render: a failing rank ends the job with one clear error and no o
     std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 x\nv 0 1 0\nf 1 2 3\n";
     const auto badScene = test::runCommand(mpirun() + " -np 2 " + strataBinary() + " render " +
                                            (dir / "bad.obj").string() + " --out " + out.string());
-    CHECK(badScene.exitCode != 0);
+    CHECK(badScene.exitCode == 1);  // bad input
     CHECK(occurrences(badScene.err, "bad.obj:2: 'x' is not a number") == 1);
     CHECK(!std::filesystem::exists(out));
+}
+
+TEST_CASE("mpi render: every rank lights the scene by the --env map rank 0 read, whatever its own folder holds") {
+    // A grey square under the sky, and two different 2:1 maps of one name in two folders: each
+    // rank starts in its own (Open MPI's -wdir) and is given the map by that relative name.
+    const auto dir = test::scratchDir("mpi-env");
+    std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream(dir / "grey.json") << R"({"position":[0,0,5],"look_at":[0,0,0],"up":[0,1,0],"fov_y":20})";
+    Image sky{8, 4, {}};
+    for (int i = 0; i < 32; ++i) sky.pixels.emplace_back(0.25f * (i % 8), 0.5f, 2.0f - 0.5f * (i / 8));
+    for (const char* folder : {"rank0", "other", "empty"}) std::filesystem::create_directory(dir / folder);
+    writeImage(dir / "rank0" / "sky.exr", sky);
+    writeImage(dir / "other" / "sky.exr", Image{8, 4, std::vector<glm::vec3>(32, glm::vec3(9.0f))});
+    const std::string arguments = "render " + (dir / "grey.obj").string() +
+                                  " --env sky.exr --width 16 --height 16 --spp 48 --seed 3 --threads 1";
+    const auto single = test::runCommand("cd " + (dir / "rank0").string() + " && " + strataBinary() + " " +
+                                         arguments + " --out " + (dir / "single.exr").string());
+    REQUIRE_MESSAGE(single.exitCode == 0, single.err);
+    const Image expected = readExr(dir / "single.exr");
+    for (const char* otherFolder : {"empty", "other"}) {
+        CAPTURE(otherFolder);
+        const auto out = dir / (std::string(otherFolder) + ".exr");
+        const std::string rank = strataBinary() + " " + arguments + " --out " + out.string();
+        const auto distributed = test::runCommand(mpirun() + " -np 1 -wdir " + (dir / "rank0").string() + " " +
+                                                  rank + " : -np 1 -wdir " + (dir / otherFolder).string() + " " + rank);
+        REQUIRE_MESSAGE(distributed.exitCode == 0, distributed.err);
+        const Image image = readExr(out);
+        REQUIRE(image.pixels.size() == expected.pixels.size());
+        size_t lit = 0;
+        for (size_t i = 0; i < image.pixels.size(); ++i) {
+            for (int c = 0; c < 3; ++c) {
+                const float x = expected.pixels[i][c];
+                const float y = image.pixels[i][c];
+                CHECK((y == x || y == std::nextafter(x, INFINITY) || y == std::nextafter(x, -INFINITY)));
+                lit += x > 0.0f;
+            }
+        }
+        CHECK(lit == 3 * image.pixels.size());  // the sky lights every pixel
+    }
 }
 
 TEST_CASE("mpi render: a killed rank ends the job without an output file") {

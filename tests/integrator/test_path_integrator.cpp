@@ -35,6 +35,8 @@ Scene lambertScene(float halfSide = 0.5f) {
     test::addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);
     const float h = halfSide;
     test::addQuad(mesh, {-h, -h, 1}, {-h, h, 1}, {h, h, 1}, {h, -h, 1}, 1);
+    // The emitter is the only light (of radiance 1, the default sky would light the scene too).
+    mesh.environment.kind = Environment::Kind::None;
     return Scene(std::move(mesh));
 }
 

@@ -2,7 +2,9 @@
 
 #include <fstream>
 #include <set>
+#include <unistd.h>
 
+#include "film/accumulation_buffer.h"
 #include "util/error.h"
 #include "io/image_io.h"
 #include "test_support.h"
@@ -27,6 +29,26 @@ TEST_CASE("image io: EXR round trip is exact in float") {
     CHECK(back.pixels == image.pixels);
     // Only the file itself is left: no temporary beside it.
     CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);
+}
+
+TEST_CASE("image io: an image's alpha goes to the EXR's A channel and back, a render's is its coverage") {
+    const auto dir = test::scratchDir("exr-alpha");
+    Image image = gradient();
+    for (int i = 0; i < 15; ++i) image.alpha.push_back(static_cast<float>(i) / 14.0f);
+    writeImage(dir / "a.exr", image);
+    const Image back = readExr(dir / "a.exr");
+    CHECK(back.pixels == image.pixels);
+    CHECK(back.alpha == image.alpha);
+    CHECK(readExr(dir / "a.exr").alpha.size() == 15);
+    writeImage(dir / "opaque.exr", gradient());
+    CHECK(readExr(dir / "opaque.exr").alpha.empty());
+    AccumulationBuffer buffer(2, 1);
+    buffer.addSample(0, glm::vec3(1.0f), true);
+    buffer.addSample(0, glm::vec3(0.5f), false);
+    buffer.addSample(1, glm::vec3(0.5f), false);
+    const Image means = buffer.meanImage();
+    CHECK(means.alpha == std::vector<float>{0.5f, 0.0f});
+    CHECK(means.pixels[0] == glm::vec3(0.75f));
 }
 
 TEST_CASE("image io: PFM holds little-endian floats, bottom row first") {
@@ -74,6 +96,38 @@ TEST_CASE("image io: a failed write leaves an existing file untouched") {
     }
 }
 
+TEST_CASE("image io: images and screenshots never write through a symlink planted at a temporary name") {
+    const auto dir = test::scratchDir("image-symlinks");
+    std::ofstream(dir / "victim") << "precious";
+    const std::string pid = std::to_string(getpid());
+    for (const char* name : {"a.exr", "a.pfm", "a.png", "shot.png"}) {
+        // The names a writer in this process would try first, then the first free one.
+        for (const std::string& suffix : {".tmp-" + pid, ".tmp" + pid, ".tmp-" + pid + "-0", ".tmp-" + pid + "-1"}) {
+            std::filesystem::create_symlink(dir / "victim", dir / (name + suffix));
+        }
+    }
+    writeImage(dir / "a.exr", gradient());
+    writeImage(dir / "a.pfm", gradient());
+    writeImage(dir / "a.png", gradient());
+    writeRgb8Png(dir / "shot.png", 2, 1, {255, 0, 0, 0, 255, 0});
+    CHECK(test::fileBytes(dir / "victim") == "precious");
+    CHECK(readExr(dir / "a.exr").pixels == gradient().pixels);
+    for (const char* name : {"a.pfm", "a.png", "shot.png"}) CHECK(std::filesystem::file_size(dir / name) > 8);
+}
+
+TEST_CASE("image io: the format comes from the extension in any letter case") {
+    CHECK(imageFormatOf("a.EXR") == ImageFormat::Exr);
+    CHECK(imageFormatOf("a.Pfm") == ImageFormat::Pfm);
+    CHECK(imageFormatOf("dir.png/a.PNG") == ImageFormat::Png);
+    CHECK_THROWS_WITH_AS(imageFormatOf("a.png.bmp"), "a.png.bmp: unknown image format (use .exr, .pfm or .png)", Error);
+    CHECK_THROWS_WITH_AS(imageFormatOf("png"), "png: unknown image format (use .exr, .pfm or .png)", Error);
+    const auto dir = test::scratchDir("image-case");
+    writeImage(dir / "a.EXR", gradient());
+    CHECK(readExr(dir / "a.EXR").pixels == gradient().pixels);
+    writeRgb8Png(dir / "shot.PNG", 1, 1, {1, 2, 3});
+    CHECK(test::fileBytes(dir / "shot.PNG").substr(1, 3) == "PNG");
+}
+
 TEST_CASE("image io: an image's size must fit 2^28 pixels and its file's bytes") {
     CHECK_NOTHROW(requirePlausibleImageSize(16384, 16384, 1 << 20, "big.exr"));
     CHECK_NOTHROW(requirePlausibleImageSize(8256, 1, 1, "dense.png"));
@@ -101,5 +155,12 @@ TEST_CASE("tonemap: sRGB encoding and curves at known points") {
     CHECK(applyTonemap(glm::vec3(0.25f), 1.0f, Tonemap::Clamp).x == doctest::Approx(0.5f));
     CHECK(applyTonemap(glm::vec3(-1.0f), 0.0f, Tonemap::Aces).x == 0.0f);
     CHECK(parseTonemap("aces") == Tonemap::Aces);
+    // The default display is the filmic curve: it rolls off the highlights the clamp cuts, and
+    // reaches 1 only near x = 7.24.
+    CHECK(kDefaultTonemap == Tonemap::Aces);
+    CHECK(applyTonemap(glm::vec3(2.0f), 0.0f, Tonemap::Aces).x < applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x);
+    CHECK(applyTonemap(glm::vec3(4.0f), 0.0f, Tonemap::Aces).x < 1.0f);
+    CHECK(applyTonemap(glm::vec3(7.3f), 0.0f, Tonemap::Aces).x == 1.0f);
+    CHECK(applyTonemap(glm::vec3(0.18f), 0.0f, Tonemap::Aces).x == doctest::Approx(0.2669f).epsilon(1e-3));
     CHECK_FALSE(parseTonemap("filmic").has_value());
 }

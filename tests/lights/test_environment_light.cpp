@@ -29,7 +29,7 @@ glm::vec2 randomPoint(uint64_t k) {
     return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
-constexpr LightHit kMiss{glm::vec3(0.0f), INFINITY};
+constexpr LightHit kMiss{glm::vec3(0.0f)};
 
 // The world direction of the map's angles (theta from +y, phi from -z toward +x), the map turned
 // by `degrees` about +y (right-handed), as environment_map_light.h documents it.

@@ -1,11 +1,19 @@
 // A scene's lights (scene_lights.h), from the light descriptions a scene hands them: emitting
 // triangles become area lights found by their triangle, point lights are added after them, and
-// the choice among all of them is by power.
+// the choice among all of them is by power; and the default sky's rule for a scene given no
+// environment.
 #include <cmath>
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <memory>
+#include <glm/geometric.hpp>
+
 #include "lights/scene_lights.h"
+#include "scene/scene_loader.h"
+#include "textures/texture.h"
 #include "util/constants.h"
+#include "test_support.h"
 
 using namespace strata;
 
@@ -16,6 +24,7 @@ void addQuad(LightDescriptions& lights, const glm::vec3& a, const glm::vec3& b, 
              const glm::vec3& d, const Material& material) {
     const auto first = static_cast<uint32_t>(lights.triangles);
     lights.triangles += 2;
+    lights.surfaceArea += 0.5 * (glm::length(glm::cross(b - a, c - a)) + glm::length(glm::cross(c - a, d - a)));
     if (!emitsLight(material)) return;
     lights.emitters.push_back({first, {a, b, c}, &material});
     lights.emitters.push_back({first + 1, {a, c, d}, &material});
@@ -128,4 +137,86 @@ TEST_CASE("scene lights: a new environment replaces the old one's light alone an
     CHECK(lights.maxRadianceAtInfinity() == 0.0f);
     CHECK(lights.sampler().probability(0) == doctest::Approx(0.5f));
     CHECK(&lights.light(0) == triangleLight);
+}
+
+namespace {
+// A grey floor of side 10 under a downward lamp quad of side 1 emitting by `lamp`.
+LightDescriptions floorUnderLamp(const Material& lamp) {
+    static const Material floor = [] {
+        Material m;
+        m.diffuse = glm::vec3(0.5f);
+        return m;
+    }();
+    LightDescriptions descriptions;
+    addQuad(descriptions, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, floor);
+    addQuad(descriptions, {0, 2, 0}, {1, 2, 0}, {1, 2, 1}, {0, 2, 1}, lamp);  // faces down
+    descriptions.sceneRadius = 0.5f * std::sqrt(204.0f);
+    return descriptions;
+}
+
+Material emitting(const glm::vec3& radiance) {
+    Material m;
+    m.emission = radiance;
+    return m;
+}
+}  // namespace
+
+TEST_CASE("scene lights: emitters no brighter than the sky leave the default sky on, brighter ones or many turn it off") {
+    // A small emitter of radiance 1 (a glowing label): the sky lights the scene, and the note says why.
+    const Material labelMaterial = emitting(glm::vec3(1.0f));
+    const SceneLights label(floorUnderLamp(labelMaterial));
+    CHECK(label.litByDefault());
+    CHECK(label.lightsAtInfinity().size() == 1);
+    CHECK(label.lightOnTriangle(2) >= 0);  // the label is a light still
+    CHECK(defaultEnvironmentNote(label) ==
+          "the scene's only lights are emitters no brighter than a white sky of radiance 1; lighting it "
+          "with a uniform white environment (--env none for black)");
+    // Brighter than the sky in one channel: a lamp, the outside stays dark.
+    const Material lampMaterial = emitting({0.2f, 1.01f, 0.2f});
+    const SceneLights lamp(floorUnderLamp(lampMaterial));
+    CHECK_FALSE(lamp.litByDefault());
+    CHECK(lamp.lightsAtInfinity().empty());
+    CHECK(lamp.defaultSkyReason().empty());
+    // A textured emitter by its brightest texel times its factor.
+    Material textured = emitting(glm::vec3(1.0f));
+    textured.textures.emission = std::make_shared<Texture>(2, 1, 1, std::vector<float>{0.0f, 1.0f});
+    CHECK(SceneLights(floorUnderLamp(textured)).litByDefault());
+    textured.emission = glm::vec3(1.5f);
+    CHECK_FALSE(SceneLights(floorUnderLamp(textured)).litByDefault());
+    // A point light turns it off, however faint.
+    const Material dim = emitting(glm::vec3(0.5f));
+    LightDescriptions pointLit = floorUnderLamp(dim);
+    pointLit.pointLights = {PointLight({0, 1, 0}, glm::vec3(1e-3f))};
+    CHECK_FALSE(SceneLights(pointLit).litByDefault());
+    // Dim emitters that make up half of the scene's area are its light: a ceiling as large as
+    // the floor (101 of 201 square units emit), or a furnace, all of it emitting.
+    LightDescriptions halfLit = floorUnderLamp(dim);
+    addQuad(halfLit, {-5, 3, -5}, {5, 3, -5}, {5, 3, 5}, {-5, 3, 5}, dim);
+    CHECK_FALSE(SceneLights(halfLit).litByDefault());
+    LightDescriptions lessThanHalf = floorUnderLamp(dim);
+    addQuad(lessThanHalf, {-5, 3, -5}, {4.8f, 3, -5}, {4.8f, 3, 5}, {-5, 3, 5}, dim);  // 99 of 199
+    CHECK(SceneLights(lessThanHalf).litByDefault());
+    // An environment given stands either way.
+    LightDescriptions given = floorUnderLamp(labelMaterial);
+    given.environment.kind = Environment::Kind::None;
+    CHECK_FALSE(SceneLights(given).litByDefault());
+}
+
+TEST_CASE("scene lights: ClearCoatTest's glowing labels get the default sky, the Cornell boxes do not") {
+    CHECK_FALSE(loadScene(test::sourceDir() / "assets" / "cornell" / "cornell.obj").scene.lights().litByDefault());
+    if (const auto shared = test::sharedDir()) {
+        for (const char* name : {"cornell", "cornell_small", "cornell_glossy"}) {
+            const auto path = *shared / "scenes" / name / "scene.obj";
+            if (std::filesystem::is_regular_file(path)) CHECK_FALSE(loadScene(path).scene.lights().litByDefault());
+        }
+    }
+    const std::filesystem::path clearCoat = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf";
+    if (!std::filesystem::is_regular_file(clearCoat)) {
+        MESSAGE("skipped: " << clearCoat << " is absent (apt-get install assimp-testmodels)");
+        return;
+    }
+    const LoadedScene loaded = loadScene(clearCoat);
+    CHECK(loaded.scene.summary().emitters > 0);
+    CHECK(loaded.scene.summary().maxEmission == 1.0f);  // the labels: factor 1 times white texels
+    CHECK(loaded.scene.lights().litByDefault());
 }

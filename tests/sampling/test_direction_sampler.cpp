@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "sampling/strata24.h"
 #include "sampling/strata24_warped.h"
+#include "materials/bsdf.h"
 #include "materials/material_table.h"
 #include "test_support.h"
 
@@ -110,7 +111,7 @@ TEST_CASE("direction sampler: every sampler is unbiased on Lambert's polygon, wi
 
 TEST_CASE("direction sampler: on a glossy receiver all samplers and NEE agree") {
     // No closed form here, so the estimators are checked against each other: the uniform
-    // sampler without NEE uses neither the material's sampling nor MIS, so it is the reference.
+    // sampler without NEE (no MIS) is the reference.
     Material glossy = lambertian(0.4f);
     glossy.specular = glm::vec3(0.6f);
     glossy.roughness = 0.5f;  // alpha 0.25
@@ -135,27 +136,34 @@ TEST_CASE("direction sampler: on a glossy receiver all samplers and NEE agree") 
 }
 
 TEST_CASE("direction sampler: the reported density is the marginal density of the direction") {
-    // Hemisphere samplers report pdf = cos / (cos/pdf); directionPdf must give the same value
-    // for the same direction (MIS relies on it), and cosine sampling's density is cos / pi.
+    // A layered material's sample reports the mixture's density, its diffuse lobe's by the
+    // sampler's warp; pdf() must give the same value for the same direction (MIS relies on it).
     Material m = lambertian(0.5f);
     m.specular = glm::vec3(0.3f);
     m.roughness = 0.6f;
     const MaterialTable bsdfMaterials({m});
-        const LayeredBsdf bsdf = bsdfMaterials.bsdf(0);
+    const Bsdf bsdf = bsdfMaterials.bsdf(0);
     const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f));
     for (SamplerKind kind : kAllSamplers) {
+        int diffuseSamples = 0;
         for (int step = 0; step < 24; ++step) {
             const PathSamples samples(9, 4, 2, step);
-            const SampledDirection s = sampleDirection(kind, samples, 0, bsdf, wo);
-            if (s.pdf == 0.0f) continue;
+            const BsdfNumbers numbers{diffuseNumbers(kind, samples, 0), samples.bouncePoint(0),
+                                      samples.lobeChoice(0)};
+            const auto s = bsdf.sample(wo, numbers);
+            if (!s) continue;
             INFO(samplerName(kind));
-            CHECK(std::abs(glm::length(s.local) - 1.0f) < 1e-5f);
-            CHECK(s.local.z >= 0.0f);
-            CHECK(directionPdf(kind, bsdf, wo, s.local) == doctest::Approx(s.pdf).epsilon(1e-4));
+            CHECK(std::abs(glm::length(s->wi) - 1.0f) < 1e-5f);
+            CHECK(s->wi.z >= 0.0f);
+            CHECK(bsdf.pdf(wo, s->wi, samplerChoice(kind).warp) == doctest::Approx(s->pdf).epsilon(1e-4));
+            if (s->flags & kGlossy) continue;
+            ++diffuseSamples;
+            CHECK(s->stratum == numbers.diffuse.stratum);
             // strata24-bsdf's diffuse directions lie in the warped image of their stratum.
-            const glm::vec3 inStratum = kind == SamplerKind::Strata24Bsdf ? warpCosineToUniform(s.local) : s.local;
-            if (s.stratum >= 0) CHECK(stratumContains(s.stratum, inStratum));
+            const glm::vec3 inStratum = kind == SamplerKind::Strata24Bsdf ? warpCosineToUniform(s->wi) : s->wi;
+            if (s->stratum >= 0) CHECK(stratumContains(s->stratum, inStratum));
         }
+        CHECK(diffuseSamples > 0);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "util/error.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
+#include "materials/material_table.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -71,8 +72,45 @@ TEST_CASE("obj: malformed lines name the file and the line") {
     CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/-2 3/1\n") ==
           "scene.obj:6: texture coordinate index -2 is out of range (1 texture coordinates so far)");
     CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n") == "scene.obj:5: '1/1/1/1' is not a face vertex");
-    CHECK_THROWS_WITH_AS(parseObj(std::string("\xFF\xFEv\0 \0", 6), "utf16.obj", "", "m.mtl"),
-                         "utf16.obj: the file is UTF-16 text; save it as UTF-8 or ASCII", Error);
+    CHECK_THROWS_WITH_AS(parseObj(std::string("\xFF\xFEv\0 ", 5), "utf16.obj", "", "m.mtl"),
+                         "utf16.obj: UTF-16 text of an odd number of bytes", Error);
+}
+
+TEST_CASE("obj: a file of only points or lines is refused as such, not as a scene without triangles") {
+    const auto errorOfObj = [](const std::string& text) {
+        try {
+            parseObj(text, "scene.obj", "", "scene.mtl");
+        } catch (const Error& error) {
+            return std::string(error.what());
+        }
+        return std::string("(loaded)");
+    };
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\n") ==
+          "scene.obj: the file holds only points (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n") ==
+          "scene.obj: the file holds only points (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n") ==
+          "scene.obj: the file holds only lines (3 vertices, no faces); Strata renders faces");
+    CHECK(errorOfObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nf 1 2 3\n") == "(loaded)");
+}
+
+TEST_CASE("obj: UTF-16 text with its byte-order mark, either byte order, is read as UTF-8") {
+    // A comment with a character beyond the BMP (a surrogate pair) and one with an unpaired
+    // surrogate, before a triangle.
+    const std::u16string text = u"# \U0001F600 \xD800\nv 0 0 0\nv 2 0 0\nv 0 3 0\nf 1 2 3\n";
+    for (const bool bigEndian : {true, false}) {
+        CAPTURE(bigEndian);
+        std::string bytes = bigEndian ? "\xFE\xFF" : "\xFF\xFE";
+        for (const char16_t unit : text) {
+            const auto hi = static_cast<char>(unit >> 8);
+            const auto lo = static_cast<char>(unit & 0xFF);
+            bytes += bigEndian ? std::string{hi, lo} : std::string{lo, hi};
+        }
+        const MeshData mesh = parseObj(bytes, "utf16.obj", "", "m.mtl");
+        REQUIRE(mesh.triangles.size() == 1);
+        CHECK(mesh.positions[1] == glm::vec3(2, 0, 0));
+        CHECK(mesh.positions[2] == glm::vec3(0, 3, 0));
+    }
 }
 
 
@@ -252,7 +290,7 @@ TEST_CASE("obj: the models of Debian's assimp-testmodels load or are refused in 
     }
     // Models that assimp and Blender open; the others are test files of broken input.
     const std::set<std::string> mustLoad = {
-        "box.obj", "box_longline.obj", "box_mat_with_spaces.obj", "box_without_lineending.obj",
+        "box.obj", "box_longline.obj", "box_mat_with_spaces.obj", "box_UTF16BE.obj", "box_without_lineending.obj",
         "concave_polygon.obj", "cube_mtllib_after_g.obj", "cube_usemtl.obj",
         "cube_with_vertexcolors.obj", "cube_with_vertexcolors_uni.obj", "empty_mat.obj",
         "multiple_spaces.obj", "regr01.obj", "regr_3429812.obj", "space_in_material_name.obj",
@@ -280,4 +318,80 @@ TEST_CASE("obj: the models of Debian's assimp-testmodels load or are refused in 
         }
     }
     MESSAGE(loaded << " of " << models << " models in " << folder.string() << " loaded");
+}
+
+TEST_CASE("obj: illum 4, 6 and 7 are dielectrics; illum 3 and 5 with Pr 0 or Ns >= 10000 are mirrors") {
+    const std::string mtl =
+        "newmtl glass\nKd 0.5 0.5 0.5\nKs 0.3 0.3 0.3\nillum 7\nNi 1.33\nTf 0.9 0.8 0.7\n"
+        "newmtl frosted\nillum 4\nPr 0.4\n"
+        "newmtl window\nillum 6\n"
+        "newmtl mirror\nKs 0.9 0.8 0.7\nillum 3\nPr 0\n"
+        "newmtl chrome\nKs 0.5 0.5 0.5\nillum 5\nNs 12000\n"
+        "newmtl satin\nKs 0.5 0.5 0.5\nillum 3\nNs 200\n"
+        "newmtl plastic\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nillum 2\nPr 0\n";
+    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : {"glass", "frosted", "window", "mirror", "chrome", "satin", "plastic"}) {
+        obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    }
+    const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl");
+    REQUIRE(mesh.materials.size() >= 7);
+    const auto byName = [&](const std::string& name) -> const Material& {
+        for (const Material& m : mesh.materials) {
+            if (m.name == name) return m;
+        }
+        FAIL("no material " << name);
+        return mesh.materials.front();
+    };
+    const Material& glass = byName("glass");
+    CHECK(glass.transmission == 1.0f);
+    CHECK(glass.ior == doctest::Approx(1.33));
+    CHECK(glass.transmissionFilter == glm::vec3(0.9f, 0.8f, 0.7f));
+    CHECK(glass.roughness == 0.0f);                // no Pr: smooth
+    CHECK(glass.diffuse == glm::vec3(0.0f));       // its Kd is ignored
+    CHECK(glass.specular == glm::vec3(0.0f));
+    CHECK(byName("frosted").roughness == doctest::Approx(0.4));
+    CHECK(byName("frosted").ior == 1.5f);          // no Ni: 1.5
+    CHECK(byName("frosted").transmissionFilter == glm::vec3(1.0f));
+    CHECK(byName("window").transmission == 1.0f);
+    CHECK(byName("mirror").roughness == 0.0f);
+    CHECK(byName("mirror").specular == glm::vec3(0.9f, 0.8f, 0.7f));
+    CHECK(byName("mirror").transmission == 0.0f);
+    CHECK(byName("chrome").roughness == 0.0f);     // Ns 12000 without Pr
+    CHECK(byName("satin").roughness > 0.1f);       // Ns 200: glossy, not a mirror
+    CHECK(byName("plastic").roughness == 0.0f);    // Pr 0 under illum 2: the layered model's limit
+    CHECK(byName("plastic").transmission == 0.0f);
+    // What those become (material_table.h).
+    const MaterialTable table(mesh.materials);
+    const auto modelOf = [&](const std::string& name) {
+        for (uint32_t i = 0; i < mesh.materials.size(); ++i) {
+            if (mesh.materials[i].name == name) return table.bsdf(i);
+        }
+        return table.bsdf(0);
+    };
+    CHECK(modelOf("glass").as<SmoothDielectric>() != nullptr);
+    CHECK(modelOf("frosted").as<RoughDielectric>() != nullptr);
+    CHECK(modelOf("mirror").as<SmoothConductor>() != nullptr);
+    CHECK(modelOf("chrome").as<SmoothConductor>() != nullptr);
+    CHECK(modelOf("satin").as<LayeredBsdf>() != nullptr);
+    CHECK(modelOf("plastic").as<Coated<LayeredBsdf>>() != nullptr);
+}
+
+TEST_CASE("obj: a dielectric's Ni and Tf are checked") {
+    const auto error = [](const std::string& material) {
+        return errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl g\nf 1 2 3\n", "newmtl g\nillum 7\n" + material);
+    };
+    CHECK(error("Ni 0\n") == "scene.mtl:1: material 'g' (illum 7, a dielectric) has an Ni that is not a positive number");
+    CHECK(error("Tf 1.5 1 1\n") == "scene.mtl:1: material 'g' has a Tf outside 0..1");
+    CHECK(error("Ni x\n") == "scene.mtl:3: 'x' is not a number");
+}
+
+TEST_CASE("obj: a Tf in CIE XYZ or spectral form is skipped, with a warning only where it would be used") {
+    const std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl glass\nf 1 2 3\nusemtl paint\nf 1 2 3\n";
+    const std::string mtl = "newmtl glass\nillum 7\nTf xyz 0.5 0.5 0.5\nnewmtl paint\nillum 2\nTf spectral glass.rfl\n";
+    LoadReport report;
+    const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
+    REQUIRE(mesh.materials.size() >= 2);
+    CHECK(mesh.materials[0].transmissionFilter == glm::vec3(1.0f));
+    CHECK(report.warnings ==
+          std::vector<std::string>{"scene.mtl:3: Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1"});
 }

@@ -71,7 +71,7 @@ TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad; paths res
     CHECK(seen(0.75f, 0.25f) == glm::vec3(2.0f));
     // The BSDF at each: Kd times the texel.
     const auto diffuseAt = [&](glm::vec2 uv) {
-        return scene.materials().bsdf(0, uv).tabulatedAlbedo({0.0f, 0.0f, 1.0f});
+        return scene.materials().bsdf(0, uv).as<LayeredBsdf>()->albedo({0.0f, 0.0f, 1.0f});
     };
     CHECK(diffuseAt({0.25f, 0.75f}) == glm::vec3(0.5f, 0.0f, 0.0f));
     CHECK(diffuseAt({0.75f, 0.25f}) == glm::vec3(0.5f));

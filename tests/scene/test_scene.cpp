@@ -59,7 +59,7 @@ TEST_CASE("scene: a triangle wound against its vertex normals is turned over, an
     CHECK(scene.triangle(0).normal.z == doctest::Approx(1.0f));
     const int32_t light = scene.triangle(0).light;
     REQUIRE(light >= 0);
-    const LightHit fromAbove{scene.triangle(0).normal, 1.0f};
+    const LightHit fromAbove{scene.triangle(0).normal};
     CHECK(scene.lights().light(static_cast<uint32_t>(light)).emitted({0, 0, -1}, fromAbove).x == 1.0f);
     // Without normals the winding decides: the same triangle faces -z.
     CHECK(Scene(oneTriangle(false)).triangle(0).normal.z == doctest::Approx(-1.0f));

@@ -50,6 +50,9 @@ TEST_CASE("scene formats: the extension picks the format, in any case") {
     CHECK((gltf.parse == &parseGltfScene));
     CHECK(&sceneFormatOf("dir/Scene.GLB") == &gltf);
     CHECK(knownSceneExtensions() == ".obj, .gltf, .glb");
+    CHECK(sceneExtensions() == std::vector<std::string_view>{".obj", ".gltf", ".glb"});
+    CHECK(lowerCaseExtension("some/folder.X/Scene.GLB") == ".glb");
+    CHECK(lowerCaseExtension("some/folder.X/Scene").empty());
 }
 
 TEST_CASE("scene formats: an unknown extension is one line naming the file, it and the known ones") {

@@ -1,7 +1,7 @@
 // Shared meshes placed as Embree instances (scene.h, mesh.h): a placed mesh traces, shades and
 // lights as its flattened copy does, whatever the placement (translation, rotation, non-uniform
 // scale, mirror); its emitters become world lights; its cut-outs stay cut out; a malformed one is
-// refused.
+// refused; the world's area and the default camera count every placement.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,9 +10,11 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "integrator/path_integrator.h"
 #include "sampling/random.h"
+#include "scene/default_camera.h"
 #include "scene/scene.h"
 #include "scene/traversal_precision.h"
 #include "textures/texture.h"
@@ -236,8 +238,8 @@ TEST_CASE("instances: Lambert's square through placed receiver and emitter, tilt
     mesh.normals = {localNormal};
     mesh.triangleNormals = {{0, 0, 0}, {0, 0, 0}};
     test::addQuad(mesh, {-0.5f, -0.5f, -1}, {0.5f, -0.5f, -1}, {0.5f, 0.5f, -1}, {-0.5f, 0.5f, -1}, 1);
-    mesh.triangleNormals.insert(mesh.triangleNormals.end(), {kNoNormals, kNoNormals});
     mesh.sharedMeshes = {{0, 2, {receiverMap}}, {2, 2, {glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1))}}};
+    mesh.environment.kind = Environment::Kind::None;  // as test::lambertSquareMesh: the square alone
     const Scene scene(std::move(mesh));
     REQUIRE(scene.summary().emitters == 2);
     REQUIRE(scene.summary().placements == 1);
@@ -358,4 +360,33 @@ TEST_CASE("instances: malformed shared meshes are refused in one line") {
     MeshData sharedVertex = placedBoxScene();
     sharedVertex.triangles[0][0] = sharedVertex.triangles[2][0];
     CHECK(refusal(sharedVertex) == "a vertex is used by two parts of the scene (mesh.h's shared meshes)");
+}
+
+TEST_CASE("instances: the world's area and the default camera take every placement") {
+    // A shared unit square placed moved, turned and mirrored (area 1 each) and doubled (area 4).
+    MeshData mesh;
+    mesh.materials.resize(1);
+    test::addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0);
+    const glm::mat4 identity(1.0f);
+    const glm::mat4 moved = glm::translate(identity, glm::vec3(10.0f, 0.0f, 0.0f));
+    const glm::mat4 turned = glm::rotate(glm::translate(identity, glm::vec3(-10.0f, 0.0f, 0.0f)), 0.7f,
+                                         glm::normalize(glm::vec3(1.0f, 2.0f, -0.5f)));
+    const glm::mat4 mirrored = glm::scale(glm::translate(identity, glm::vec3(0.0f, 10.0f, 0.0f)),
+                                          glm::vec3(-1.0f, 1.0f, 1.0f));
+    const glm::mat4 doubled = glm::scale(glm::translate(identity, glm::vec3(0.0f, -10.0f, 0.0f)), glm::vec3(2.0f));
+    mesh.sharedMeshes = {{0, 2, {moved, turned, mirrored, doubled}}};
+    CHECK(worldArea(mesh) == doctest::Approx(7.0).epsilon(1e-6));
+    // A world triangle beside them counts once.
+    MeshData withFloor = mesh;
+    test::addQuad(withFloor, {0, 0, -5}, {3, 0, -5}, {3, 2, -5}, {0, 2, -5}, 0);
+    CHECK(worldArea(withFloor) == doctest::Approx(13.0).epsilon(1e-6));
+
+    // The default camera frames the placed squares, not the stored one (which alone is flat).
+    const auto [lower, upper] = worldBounds(mesh);
+    const CameraPose pose = defaultCameraPose(mesh, kGltfOrientation);
+    CHECK(glm::length(pose.lookAt - 0.5f * (lower + upper)) < 1e-4f);
+    const float radius = 0.5f * glm::length(upper - lower);
+    CHECK(glm::length(pose.position - pose.lookAt) ==
+          doctest::Approx(radius / std::sin(glm::radians(0.5f * kDefaultFovYDegrees))).epsilon(1e-5));
+    CHECK(radius > 10.0f);
 }

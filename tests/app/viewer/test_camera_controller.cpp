@@ -6,6 +6,7 @@
 #include <glm/trigonometric.hpp>
 #include <imgui.h>
 
+#include "app/viewer/headless_imgui.h"
 #include "camera_controller.h"
 
 using namespace strata;
@@ -13,19 +14,8 @@ using namespace strata::viewer;
 
 namespace {
 
-// An ImGui context that can run frames without a renderer.
 struct ImGuiFrames {
-    ImGuiFrames() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(640, 480);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // NewFrame needs a built atlas
-    }
-    ~ImGuiFrames() { ImGui::DestroyContext(); }
+    test::HeadlessImGui context{ImVec2(640, 480)};
     // One frame of input through the controller.
     bool step(CameraController& camera) {
         ImGui::NewFrame();

@@ -1,15 +1,18 @@
 // The viewer's UI logic under synthetic Dear ImGui input in an offscreen (OSMesa) context: the
-// panel's controls reach the render worker. ImGui 1.86 predates io.AddKeyEvent, so input goes
-// through io.MousePos / io.MouseDown.
+// panel's controls reach the render worker, the panel lies beside the image, its file dialog
+// opens files, and loads run off the UI thread. ImGui 1.86 predates io.AddKeyEvent, so input
+// goes through io.MousePos / io.MouseDown.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <thread>
 #include <vector>
 #include <imgui.h>
 
+#include "io/auto_exposure.h"
 #include "io/image_io.h"
 #include "test_support.h"
 #include "viewer_run.h"
@@ -19,23 +22,46 @@ using namespace strata::viewer;
 
 namespace {
 
-constexpr int kWidth = 480, kHeight = 720;
+// The panel and, right of it, an image 480 pixels wide.
+constexpr int kWidth = static_cast<int>(kPanelWidth) + 480, kHeight = 720;
+
+const std::filesystem::path kCornell = test::sourceDir() / "assets/cornell/cornell.obj";
 
 struct Harness {
+    int width, height;
     std::unique_ptr<OffscreenContext> context = OffscreenContext::create(OffscreenBackend::OsMesa);
-    FrameTarget target = FrameTarget::offscreen(kWidth, kHeight);
+    FrameTarget target;
     ImGuiSession imgui;
     Viewer viewer;
 
-    explicit Harness(const ViewerSettings& settings,
-                     const std::filesystem::path& scene = test::sourceDir() / "assets/cornell/cornell.obj")
-        : viewer(std::make_shared<LoadedScene>(loadScene(scene)), settings, nullptr) {
+    explicit Harness(const ViewerSettings& settings, const std::filesystem::path& scene = kCornell,
+                     int width = kWidth, int height = kHeight)
+        : width(width),
+          height(height),
+          target(FrameTarget::offscreen(width, height)),
+          viewer(std::make_shared<LoadedScene>(loadScene(scene)), settings, nullptr) {
         frame();
         frame();  // the panel's layout settles on its second frame
     }
     void frame() {
-        beginOffscreenFrame(kWidth, kHeight, 1.0f / 60.0f);
+        beginOffscreenFrame(width, height, 1.0f / 60.0f);
         viewer.frame(target);
+    }
+    // Frames until no load is in flight, and one more, in which the viewer takes its outcome.
+    // Returns the frames drawn while it was; fails after a generous bound (a stuck loader).
+    int settle() {
+        int frames = 0;
+        for (; viewer.loading(); ++frames) {
+            REQUIRE_MESSAGE(frames < 6000, "the load never ended");
+            frame();
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        frame();
+        return frames;
+    }
+    void open(const std::filesystem::path& path) {
+        viewer.openScene(path);
+        settle();
     }
     // Moves to the control's point, presses, releases: one click, as ImGui sees it over 3 frames;
     // then one more frame, so that what the click opened (a combo's popup, placed on its second
@@ -52,6 +78,11 @@ struct Harness {
         io.MouseDown[0] = false;
         frame();
         frame();
+    }
+    // Two clicks as fast as the frames go: well within ImGui's double-click time.
+    void doubleClick(const std::string& control) {
+        click(control);
+        click(control);
     }
     // Runs frames until `done` holds for the displayed snapshot; fails after a generous bound
     // (a stuck worker, not a slow one: it is not a timing assertion).
@@ -130,18 +161,15 @@ TEST_CASE("a scene that fails to load leaves the old one rendering") {
     const auto dir = test::scratchDir("viewer-bad-scene");
     const auto bad = dir / "bad.obj";
     std::ofstream(bad) << "v 0 0 0\nf 1 2 3\n";  // indices out of range
-    h.viewer.openScene(bad);
-    h.frame();
+    h.open(bad);
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message().find("bad.obj") != std::string::npos);
-    h.viewer.openScene(dir / "missing.obj");
-    h.frame();
+    h.open(dir / "missing.obj");
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message().find("missing.obj") != std::string::npos);
     // A file of no registered format (as dropped on the window): the format's one line.
     std::ofstream(dir / "model.fbx") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    h.viewer.openScene(dir / "model.fbx");
-    h.frame();
+    h.open(dir / "model.fbx");
     CHECK(h.viewer.workerConfig().scene == before);
     CHECK(h.viewer.panel().message() ==
           "cannot open scene: " + (dir / "model.fbx").string() + ": unknown scene format '.fbx' (known: .obj, .gltf, .glb)");
@@ -154,11 +182,10 @@ TEST_CASE("a scene file of a registered extension, in any case, opens in place o
     const auto dir = test::scratchDir("viewer-open-scene");
     std::ofstream(dir / "QUAD.OBJ") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl lamp\nf 1 2 3 4\n";
     std::ofstream(dir / "quad.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
-    h.viewer.openScene(dir / "QUAD.OBJ");
-    h.frame();
+    h.open(dir / "QUAD.OBJ");
     CHECK(h.viewer.workerConfig().scene != before);
     CHECK(h.viewer.workerConfig().scene->scene.summary().triangles == 2);
-    CHECK(h.viewer.panel().message() == "opened " + (dir / "QUAD.OBJ").string());
+    CHECK(h.viewer.panel().message().rfind("opened " + (dir / "QUAD.OBJ").string() + " in ", 0) == 0);
     CHECK(h.viewer.panel().scenePath() == (dir / "QUAD.OBJ").string());
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
@@ -176,8 +203,7 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     REQUIRE(h.viewer.workerConfig().scene->scene.lights().litByDefault());
     CHECK(describeEnvironment(h.viewer.workerConfig().scene->scene) == "default white sky: the scene has no light");
     writeImage(dir / "sky.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.5f))});
-    h.viewer.openScene(dir / "sky.exr");
-    h.frame();
+    h.open(dir / "sky.exr");
     const auto relit = h.viewer.workerConfig().scene;
     CHECK(!relit->scene.lights().litByDefault());
     CHECK(relit->scene.lights().maxRadianceAtInfinity() == 0.5f);
@@ -187,15 +213,13 @@ TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old 
     CHECK(describeEnvironment(relit->scene) == "map sky.exr (4x2), turned 0 degrees");
 
     writeImage(dir / "square.exr", Image{2, 2, std::vector<glm::vec3>(4, glm::vec3(1.0f))});
-    h.viewer.openScene(dir / "square.exr");
-    h.frame();
+    h.open(dir / "square.exr");
     CHECK(h.viewer.workerConfig().scene == relit);
     CHECK(h.viewer.panel().message().rfind("cannot use environment map: " + (dir / "square.exr").string() +
                                            ": an environment map must be a latitude-longitude image", 0) == 0);
     CHECK(h.viewer.panel().message().find('\n') == std::string::npos);
     // The chosen environment lights the scenes opened after it.
-    h.viewer.openScene(test::sourceDir() / "assets/cornell/cornell.obj");
-    h.frame();
+    h.open(kCornell);
     CHECK(h.viewer.workerConfig().scene->scene.lights().maxRadianceAtInfinity() == 0.5f);
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
@@ -248,6 +272,7 @@ TEST_CASE("the Light tab opens a listed map once; turning it or going back to it
     const auto& lights = h.viewer.workerConfig().scene->scene.lights();
     h.click("Light");
     h.click("environment map");  // no map read yet: the first one listed
+    h.settle();
     REQUIRE(h.viewer.settings().environment.kind == Environment::Kind::Map);
     const auto map = h.viewer.settings().environment.map;
     CHECK(map->name() == (dir / "warm.exr").string());
@@ -264,11 +289,13 @@ TEST_CASE("the Light tab opens a listed map once; turning it or going back to it
 
     h.click("environment uniform");
     h.click("environment map");
+    CHECK(!h.viewer.loading());  // the map read before: nothing to load
     CHECK(lights.environment().map == map);
     CHECK(lights.environment().rotationDegrees == degrees);
 
     h.click("studio lights");
     h.click("studio lights/cool.exr");
+    h.settle();
     CHECK(lights.environment().map->name() == (dir / "cool.exr").string());
     CHECK(lights.maxRadianceAtInfinity() == 3.0f);
     CHECK(h.viewer.panel().environmentMapPath() == (dir / "cool.exr").string());
@@ -295,8 +322,7 @@ TEST_CASE("the command line's environment lights every scene the viewer opens") 
     ViewerSettings settings = smallSingleView();
     settings.environment.kind = Environment::Kind::None;
     Harness h(settings);
-    h.viewer.openScene(writeUnlitQuad(dir));
-    h.frame();
+    h.open(writeUnlitQuad(dir));
     const auto opened = h.viewer.workerConfig().scene;
     CHECK(opened->scenePath() == dir / "grey.obj");
     CHECK(opened->scene.lights().size() == 0);
@@ -310,8 +336,7 @@ TEST_CASE("the panel shows the open scene's load summary and its warnings") {
     CHECK(h.viewer.panel().sceneWarnings().empty());
     const auto dir = test::scratchDir("viewer-scene-report");
     std::ofstream(dir / "s.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n";
-    h.viewer.openScene(dir / "s.obj");
-    h.frame();
+    h.open(dir / "s.obj");
     CHECK(h.viewer.panel().sceneSummary().find("s.obj: 1 triangles") != std::string::npos);
     CHECK(h.viewer.panel().sceneSummary().find(", 1 warning") != std::string::npos);
     CHECK(h.viewer.panel().sceneWarnings() ==
@@ -339,7 +364,7 @@ TEST_CASE("depth from epsilon sets every side's depth to K_eps and locks the sli
 TEST_CASE("depth from epsilon leaves the depth alone where no finite depth bounds the error") {
     ViewerSettings settings = smallSingleView();
     settings.single.depth = 3;
-    Harness h(settings, test::sharedDir() / "scenes/cornell_point/scene.obj");
+    Harness h(settings, test::testScene("cornell_point"));
     h.click("depth from epsilon");
     CHECK(h.viewer.workerConfig().sides.at(0).depth == 3);  // point lights: no radiance bound
 }
@@ -348,6 +373,7 @@ TEST_CASE("a noise threshold stops every pixel, then rendering, and the mask vie
     ViewerSettings settings = smallSingleView();
     settings.single = {SamplerKind::Strata24, 2};
     settings.noiseThreshold = 0.05f;
+    settings.display.tonemap = Tonemap::Clamp;
     Harness h(settings, test::sourceDir() / "assets/furnace/furnace.obj");
     const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && !s.preview; });
     REQUIRE(done.sides.size() == 1);
@@ -452,4 +478,273 @@ TEST_CASE("the save buttons write the image as displayed (PNG) and its linear ra
     CHECK(header[1] == 'P');
     CHECK(bigEndian(16) == shown.width);
     CHECK(bigEndian(20) == shown.height);
+}
+
+TEST_CASE("at 1280x720 the panel lies beside the image: no panel pixel covers the Cornell box") {
+    // One image (no divider or side labels drawn over it), a quarter of the image area's size.
+    ViewerSettings settings;
+    settings.split = false;
+    settings.resolutionScale = 0.25f;
+    settings.targetSpp = 24;
+    Harness h(settings, kCornell, 1280, 720);
+    h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 24; });
+    h.frame();
+    const Viewport area = h.viewer.imageArea();
+    CHECK(area.x == static_cast<int>(kPanelWidth));
+    CHECK(area.width == 1280 - area.x);
+    CHECK(area.height == 720);
+    // The render has the image area's size (times the scale): nothing of it is cut off.
+    const DisplayImage& image = h.viewer.shownSnapshot()->sides.at(0).image;
+    REQUIRE(image.width == area.width / 4);
+    REQUIRE(image.height == area.height / 4);
+
+    // The box, from the render alone: the bounding rectangle of its lit pixels (outside the box
+    // the camera sees nothing: no environment). All of it is in the image.
+    int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = &image.meanAndCount[4 * (static_cast<size_t>(y) * image.width + x)];
+            if (p[0] + p[1] + p[2] <= 0.0f) continue;
+            x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        }
+    }
+    REQUIRE(x1 > x0);
+    CHECK(x0 > 0);
+    CHECK(x1 < image.width - 1);
+    CHECK(y0 >= 0);
+    CHECK(y1 <= image.height - 1);
+    CHECK(x1 - x0 > image.width / 2);  // the box, not a speck
+
+    // On screen, every pixel of the box's rectangle is the displayed image's pixel under it:
+    // nothing of the panel is drawn over it.
+    const std::vector<uint8_t> screen = h.target.readRgb();
+    REQUIRE(h.viewer.displayedImage() != nullptr);
+    const std::vector<uint8_t> shown = h.viewer.displayedImage()->readRgb();
+    const int left = area.x + x0 * 4, right = area.x + (x1 + 1) * 4;
+    size_t covered = 0, compared = 0;
+    for (int sy = y0 * 4; sy < (y1 + 1) * 4; ++sy) {
+        for (int sx = left; sx < right; ++sx) {
+            const size_t s = 3 * (static_cast<size_t>(sy) * 1280 + sx);
+            const size_t i = 3 * (static_cast<size_t>(sy / 4) * image.width + (sx - area.x) / 4);
+            covered += screen[s] != shown[i] || screen[s + 1] != shown[i + 1] || screen[s + 2] != shown[i + 2];
+            ++compared;
+        }
+    }
+    CHECK(compared > 200000);
+    CHECK(covered == 0);
+    // And every control the panel drew is left of the box.
+    for (const auto& [name, rect] : h.viewer.panel().controls()) {
+        CAPTURE(name);
+        CHECK(rect.max.x <= static_cast<float>(left));
+    }
+}
+
+TEST_CASE("the panel folds to a strip and the image takes the window's width; unfolded, it is back") {
+    Harness h(smallSingleView());
+    CHECK(h.viewer.imageArea().x == static_cast<int>(kPanelWidth));
+    const int narrow = h.viewer.workerConfig().width;
+    h.click("fold panel");
+    CHECK(h.viewer.panel().folded());
+    CHECK(h.viewer.imageArea().x == static_cast<int>(kFoldedPanelWidth));
+    CHECK(h.viewer.imageArea().width == kWidth - static_cast<int>(kFoldedPanelWidth));
+    CHECK(h.viewer.workerConfig().width > narrow);
+    h.click("unfold panel");
+    CHECK(!h.viewer.panel().folded());
+    CHECK(h.viewer.imageArea().x == static_cast<int>(kPanelWidth));
+    CHECK(h.viewer.workerConfig().width == narrow);
+}
+
+TEST_CASE("at 1280x720 the split view's plots and the load line fit in the window, the plots' labels inside them") {
+    ViewerSettings settings;
+    settings.resolutionScale = 0.125f;
+    settings.threads = 1;
+    settings.targetSpp = 72;  // three passes: two points a curve
+    Harness h(settings, kCornell, 1280, 720);
+    h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 72; });
+    h.frame();
+    const auto& controls = h.viewer.panel().controls();
+    REQUIRE(controls.count("error vs seconds") == 1);
+    CHECK(controls.at("open scene...").max.y < controls.at("Sampling").min.y);
+    CHECK(controls.at("change environment").max.y < controls.at("Sampling").min.y);
+    CHECK(controls.at("error vs spp").min.y > controls.at("Sampling").max.y);
+    CHECK(controls.at("error vs seconds").max.y <= 720.0f);
+    CHECK(controls.at("error vs seconds").max.x <= kPanelWidth);
+}
+
+namespace {
+
+// An N x N grid of quads: 2 N^2 triangles, a few MB of OBJ that take a while to parse and build.
+std::filesystem::path writeGrid(const std::filesystem::path& dir, int n) {
+    const auto path = dir / "grid.obj";
+    std::ofstream obj(path);
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) obj << "v " << i << ' ' << j << " 0\n";
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i + 1;
+            obj << "f " << a << ' ' << a + 1 << ' ' << a + n + 2 << ' ' << a + n + 1 << '\n';
+        }
+    }
+    return path;
+}
+
+}  // namespace
+
+TEST_CASE("viewer threads: a large scene loads off the UI thread while frames go on and the old scene renders") {
+    const auto dir = test::scratchDir("viewer-async-load");
+    const auto grid = writeGrid(dir, 400);
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const uint64_t generation = h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1; }).generation;
+    h.viewer.openScene(grid);
+    CHECK(h.viewer.loading());  // returned before the load ended
+    int frames = 0;
+    bool progressShown = false, oldSceneKept = true;
+    while (h.viewer.loading()) {
+        REQUIRE_MESSAGE(frames < 60000, "the load never ended");
+        h.frame();
+        ++frames;
+        progressShown |= h.viewer.panel().controls().count("cancel load") == 1;
+        if (!h.viewer.loading()) break;  // this frame may have shown the new scene
+        // The old scene is configured, and rendering it goes on without a restart.
+        oldSceneKept &= h.viewer.workerConfig().scene == before && h.viewer.shownSnapshot()->generation == generation;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    h.frame();
+    INFO(frames << " UI frames during the load");
+    CHECK(frames >= 3);
+    CHECK(progressShown);
+    CHECK(oldSceneKept);
+    CHECK(h.viewer.workerConfig().scene->scene.summary().triangles == 2 * 400 * 400);
+    CHECK(h.viewer.panel().message().rfind("opened " + grid.string() + " in ", 0) == 0);
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("viewer threads: the load line's cancel button stops a load and keeps the open scene") {
+    const auto dir = test::scratchDir("viewer-cancel-load");
+    const auto grid = writeGrid(dir, 400);
+    Harness h(smallSingleView());
+    const auto before = h.viewer.workerConfig().scene;
+    const std::string summary = h.viewer.panel().sceneSummary();
+    h.viewer.openScene(grid);
+    h.frame();  // draws the load line with its button
+    h.click("cancel load");
+    h.settle();
+    CHECK(h.viewer.workerConfig().scene == before);
+    CHECK(h.viewer.panel().sceneSummary() == summary);
+    CHECK(h.viewer.panel().message() == "cancelled loading " + grid.string() + "; the open scene stays");
+    h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
+}
+
+TEST_CASE("the file dialog lists scene files and folders, goes up and into them, and opens the scene chosen") {
+    const auto dir = test::scratchDir("viewer-file-dialog");
+    std::filesystem::create_directory(dir / "sub");
+    std::ofstream(dir / "sub/QUAD.OBJ") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    std::ofstream(dir / "sub/notes.txt") << "not a scene\n";
+    Harness h(smallSingleView());
+    h.viewer.panel().setScenePath((dir / "sub/gone.obj").string());  // the nearest folder: sub
+    h.click("open scene...");
+    const FileDialog& dialog = h.viewer.panel().fileDialog();
+    REQUIRE(dialog.isOpen());
+    CHECK(dialog.folder() == dir / "sub");
+    const auto& controls = h.viewer.panel().controls();
+    CHECK(controls.count("dialog/QUAD.OBJ") == 1);
+    CHECK(controls.count("dialog/notes.txt") == 0);
+    h.doubleClick("dialog/..");
+    CHECK(dialog.folder() == dir);
+    h.click("dialog/sub");  // selected: its name in the path field
+    CHECK(dialog.folder() == dir);
+    h.click("dialog open");
+    CHECK(dialog.folder() == dir / "sub");
+    h.click("dialog/QUAD.OBJ");
+    CHECK(dialog.isOpen());
+    h.click("dialog open");
+    CHECK(!dialog.isOpen());
+    h.settle();
+    CHECK(h.viewer.workerConfig().scene->scenePath() == dir / "sub/QUAD.OBJ");
+    CHECK(h.viewer.workerConfig().scene->scene.summary().triangles == 2);
+    CHECK(h.viewer.panel().scenePath() == (dir / "sub/QUAD.OBJ").string());
+
+    // It opens again at that scene; a double click on a file opens it, Cancel opens nothing.
+    h.click("open scene...");
+    REQUIRE(dialog.isOpen());
+    CHECK(dialog.folder() == dir / "sub");
+    const auto opened = h.viewer.workerConfig().scene;
+    h.doubleClick("dialog/QUAD.OBJ");
+    CHECK(!dialog.isOpen());
+    h.settle();
+    CHECK(h.viewer.workerConfig().scene != opened);
+    CHECK(h.viewer.workerConfig().scene->scenePath() == dir / "sub/QUAD.OBJ");
+    h.click("open scene...");
+    REQUIRE(dialog.isOpen());
+    h.click("dialog cancel");
+    CHECK(!dialog.isOpen());
+    CHECK(!h.viewer.loading());
+}
+
+TEST_CASE("the environment line opens the Light tab, whose map comes from the file dialog and turns live") {
+    const auto dir = test::scratchDir("viewer-light-dialog");
+    Harness h(smallSingleView(), writeUnlitQuad(dir));
+    writeImage(dir / "warm.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(2.0f, 1.0f, 0.5f))});
+    h.viewer.panel().setEnvironmentMapChoices({});  // only the dialog offers maps
+    const auto& scene = h.viewer.workerConfig().scene->scene;
+    CHECK(h.viewer.panel().controls().count("environment none") == 0);  // the Sampling tab shows
+    h.click("change environment");
+    h.click("environment none");
+    CHECK(h.viewer.settings().environment.kind == Environment::Kind::None);
+    CHECK(describeEnvironment(scene) == "none");
+
+    h.click("environment map");  // no map yet: the file controls show
+    CHECK(!h.viewer.loading());
+    h.viewer.panel().setEnvironmentMapPath((dir / "warm.exr").string());
+    h.click("browse maps");
+    const FileDialog& dialog = h.viewer.panel().fileDialog();
+    REQUIRE(dialog.isOpen());
+    CHECK(dialog.folder() == dir);
+    CHECK(dialog.entries() == std::vector<FolderEntry>{{"warm.exr", false}});
+    h.click("dialog open");  // the field holds warm.exr
+    h.settle();
+    CHECK(h.viewer.settings().environment.kind == Environment::Kind::Map);
+    CHECK(scene.lights().environment().map->name() == (dir / "warm.exr").string());
+    CHECK(scene.lights().maxRadianceAtInfinity() == 2.0f);
+    h.click("environment rotation", 0.25f);  // -180..180 degrees: about -90
+    CHECK(scene.lights().environment().rotationDegrees < -45.0f);
+    CHECK(describeEnvironment(scene).rfind("map warm.exr (4x2), turned -", 0) == 0);
+}
+
+TEST_CASE("the loader's note has its line in the load summary, above the controls") {
+    Harness h(smallSingleView());
+    h.viewer.panel().setSceneNote("read 1 file outside the scene's folder, as --allow-outside-files lets it");
+    h.frame();
+    const auto& controls = h.viewer.panel().controls();
+    REQUIRE(controls.count("scene note") == 1);
+    CHECK(controls.at("scene note").min.y > controls.at("open scene...").max.y);
+    CHECK(controls.at("scene note").max.y < controls.at("change environment").min.y);
+}
+
+TEST_CASE("the display's exposure comes from the first whole image and then stays, and the backdrop reaches the worker") {
+    ViewerSettings settings = smallSingleView();
+    settings.autoExposure = true;
+    settings.backdrop = {BackdropSetting::Kind::Colour, glm::vec3(0.5f)};
+    settings.targetSpp = 48;
+    {
+        Harness h(settings);
+        CHECK(h.viewer.workerConfig().backdrop == settings.backdrop);
+        const uint64_t generation =
+            h.waitFor([](const WorkerSnapshot& s) { return !s.preview && s.spp >= 1; }).generation;
+        const float metered = h.viewer.settings().display.exposure;
+        CHECK(metered != 0.0f);
+        // Taken from a one-path image, within a quarter stop of the exposure of the finished one.
+        const auto& done = h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 48; });
+        CHECK(done.generation == generation);
+        CHECK(std::abs(metered - autoExposure(done.sides.at(0).image.radiance())) < 0.25f);
+        CHECK(h.viewer.settings().display.exposure == metered);
+    }
+    // Given (not automatic), the exposure is left alone.
+    settings.autoExposure = false;
+    settings.display.exposure = 1.5f;
+    Harness fixed(settings);
+    fixed.waitFor([](const WorkerSnapshot& s) { return !s.preview && s.spp >= 1; });
+    CHECK(fixed.viewer.settings().display.exposure == 1.5f);
 }

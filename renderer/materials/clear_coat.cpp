@@ -1,0 +1,102 @@
+#include "materials/clear_coat.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+#include "materials/fresnel.h"
+
+namespace strata {
+namespace {
+float average(const glm::vec3& v) { return (v.x + v.y + v.z) / 3.0f; }
+}  // namespace
+
+glm::vec3 CoatLayer::albedo(float mu) const {
+    if (!lobe) return weight * schlickFresnel(f0, mu);
+    const glm::vec2 e = lobe->albedo.albedo(mu);
+    return weight * (f0 * e.x + (glm::vec3(1.0f) - f0) * e.y);
+}
+
+template <class Base>
+float Coated<Base>::coatProbability(const glm::vec3& wo) const {
+    const glm::vec3 coat = coat_.albedo(wo.z);
+    const float c = average(coat);
+    const float b = average((glm::vec3(1.0f) - coat) * base_.albedo(wo));
+    if (!(b > 0.0f)) return 1.0f;
+    // Both keep some probability so that the mixture's density covers each.
+    return std::clamp(c / (c + b), 0.05f, 0.95f);
+}
+
+template <class Base>
+glm::vec3 Coated<Base>::albedo(const glm::vec3& wo) const {
+    const glm::vec3 coat = coat_.albedo(wo.z);
+    return coat + (glm::vec3(1.0f) - coat) * base_.albedo(wo);
+}
+
+template <class Base>
+glm::vec3 Coated<Base>::roughCoat(const glm::vec3& wo, const glm::vec3& wi) const {
+    if (!coat_.lobe) return glm::vec3(0.0f);
+    const glm::vec3 h = glm::normalize(wo + wi);
+    return coat_.weight * schlickFresnel(coat_.f0, glm::dot(wo, h)) * coat_.lobe->distribution.reflectance(wo, wi);
+}
+
+template <class Base>
+glm::vec3 Coated<Base>::evaluate(const glm::vec3& wo, const glm::vec3& wi, TransportMode mode) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 through = (glm::vec3(1.0f) - coat_.albedo(wo.z)) * (glm::vec3(1.0f) - coat_.albedo(wi.z));
+    return roughCoat(wo, wi) + through * base_.evaluate(wo, wi, mode);
+}
+
+template <class Base>
+float Coated<Base>::pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp warp) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    const float p = coatProbability(wo);
+    float density = (1.0f - p) * base_.pdf(wo, wi, warp);
+    if (coat_.lobe) density += p * coat_.lobe->distribution.reflectionPdf(wo, wi);
+    return density;
+}
+
+template <class Base>
+std::optional<BsdfSample> Coated<Base>::sample(const glm::vec3& wo, const BsdfNumbers& numbers,
+                                               TransportMode mode) const {
+    if (!(wo.z > 0.0f)) return std::nullopt;
+    const float p = coatProbability(wo);
+    glm::vec3 wi;
+    int stratum = -1;
+    BsdfFlags lobe = kReflection | kGlossy;
+    if (numbers.lobeChoice < p) {
+        if (!coat_.lobe) {
+            // The smooth coat's mirror direction: a delta, weighted by itself alone.
+            const glm::vec3 reflectance = coat_.albedo(wo.z);
+            return BsdfSample{reflectLocal(wo), reflectance / wo.z, p, reflectance / p,
+                              kReflection | kSpecular, 1.0f, -1};
+        }
+        const glm::vec3 h = coat_.lobe->distribution.sampleVisibleNormal(wo, numbers.lobePoint);
+        wi = reflect(wo, h);
+        if (wi.z <= 0.0f) return std::nullopt;
+        wi = glm::normalize(wi);
+    } else {
+        BsdfNumbers inner = numbers;
+        inner.lobeChoice = std::min((numbers.lobeChoice - p) / (1.0f - p), 0x1.fffffep-1f);
+        const auto s = base_.sample(wo, inner, mode);
+        if (!s) return std::nullopt;
+        if (isSpecular(s->flags)) {
+            // A delta of the base (a mirror under the coat): its weight through the coat.
+            const glm::vec3 through =
+                (glm::vec3(1.0f) - coat_.albedo(wo.z)) * (glm::vec3(1.0f) - coat_.albedo(s->wi.z));
+            return BsdfSample{s->wi, through * s->f, (1.0f - p) * s->pdf, through * s->weight / (1.0f - p),
+                              s->flags, s->eta, -1};
+        }
+        wi = s->wi;
+        lobe = s->flags;
+        stratum = s->stratum;
+    }
+    const float density = pdf(wo, wi, numbers.diffuse.warp);
+    if (!(density > 0.0f)) return std::nullopt;
+    const glm::vec3 f = evaluate(wo, wi, mode);
+    return BsdfSample{wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum};
+}
+
+template class Coated<LayeredBsdf>;
+template class Coated<SmoothConductor>;
+
+}  // namespace strata

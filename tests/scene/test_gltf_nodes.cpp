@@ -1,0 +1,89 @@
+// What the glTF scene builder (gltf_nodes.h) leaves out and says so, as assimp does: vertices that
+// make no whole triangle, triangles with an index past their vertices, points and lines; and the
+// one line that refuses a file when nothing is left, naming why.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/gltf_loader.h"
+#include "scene/gltf_test_model.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+
+using namespace strata;
+using nlohmann::json;
+using test::errorOf;
+
+namespace {
+
+const std::vector<float> kQuad{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+
+bool warned(const LoadReport& report, const std::string& line) {
+    return std::count(report.warnings.begin(), report.warnings.end(), "mem/model.gltf: " + line) == 1;
+}
+
+
+}  // namespace
+
+TEST_CASE("gltf nodes: vertices that make no whole triangle are left out with a warning") {
+    test::Model model;
+    model.meshNode({{"attributes", {{"POSITION", model.positions({0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5, 6, 6, 6})}}}});
+    LoadReport report;
+    const MeshData mesh = parseGltfScene(test::bundleOf(model.gltf()), &report).mesh;
+    CHECK(mesh.triangles.size() == 1);
+    CHECK(warned(report, "mesh 'm0' (0) primitive 0: 5 vertices do not make whole triangles; the last 2 left out"));
+}
+
+TEST_CASE("gltf nodes: a triangle with an index past the vertices is left out, the count in one warning") {
+    test::Model model;
+    const int positions = model.positions(kQuad);
+    const int indices = model.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 9, 0, 2, 3}, "SCALAR", 5123, 9);
+    model.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
+    LoadReport report;
+    const MeshData mesh = parseGltfScene(test::bundleOf(model.gltf()), &report).mesh;
+    REQUIRE(mesh.triangles.size() == 2);
+    CHECK(mesh.triangles[1] == std::array<uint32_t, 3>{0, 2, 3});
+    CHECK(warned(report, "mesh 'm0' (0) primitive 0: 1 of 3 triangles uses an index past its 4 vertices; left out"));
+    // In a strip, the index leaves out every triangle that uses it: 3 of its 7; of the other 4,
+    // (2, 0, 2) is degenerate.
+    model.doc["meshes"][0]["primitives"][0]["mode"] = 5;
+    LoadReport strip;
+    CHECK(parseGltfScene(test::bundleOf(model.gltf()), &strip).mesh.triangles.size() == 3);
+    CHECK(warned(strip, "mesh 'm0' (0) primitive 0: 3 of 7 triangles use an index past its 4 vertices; left out"));
+}
+
+TEST_CASE("gltf nodes: points and lines are skipped beside surfaces, and named when they are all there is") {
+    test::Model model;
+    const int positions = model.positions(kQuad);
+    model.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 0}});
+    CHECK(errorOf(model) == "mem/model.gltf: the file holds only points, no surfaces; Strata renders triangles, "
+                            "strips and fans");
+    model.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 3}});
+    CHECK(errorOf(model) == "mem/model.gltf: the file holds only points and lines, no surfaces; Strata renders "
+                            "triangles, strips and fans");
+    model.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 6}}, {{"translation", {0, 0, 5}}});
+    LoadReport report;
+    const MeshData mesh = parseGltfScene(test::bundleOf(model.gltf()), &report).mesh;
+    CHECK(mesh.triangles.size() == 2);
+    CHECK(mesh.positions.size() == 4);  // the points' and lines' vertices are not kept (nor framed)
+    CHECK(warned(report, "points and lines are not surfaces; their primitives are skipped"));
+}
+
+TEST_CASE("gltf nodes: assimp's incomplete and out-of-range test models open as assimp opens them") {
+    const std::filesystem::path root = "/usr/share/assimp/models/glTF2";
+    if (!std::filesystem::is_directory(root)) {
+        MESSAGE("assimp-testmodels not installed: " << root << " is absent, skipped");
+        return;
+    }
+    const LoadedScene cube = loadScene(root / "IncorrectVertexArrays/Cube.gltf");
+    CHECK(cube.scene.summary().triangles > 0);
+    const LoadedScene index = loadScene(root / "IndexOutOfRange/IndexOutOfRange.gltf");
+    CHECK(index.scene.summary().triangles == 11);  // assimp: 1 of 12 faces dropped
+    const std::string warning = (root / "IndexOutOfRange/IndexOutOfRange.gltf").string() +
+                                ": mesh 'Mesh' (0) primitive 0: 1 of 12 triangles uses an index past its 24 vertices; "
+                                "left out";
+    CHECK(std::count(index.report.warnings.begin(), index.report.warnings.end(), warning) == 1);
+}
