@@ -122,7 +122,7 @@ void RenderCommand::run() const {
             session.run({}, [&](const PassReport& report) {
                 jobProgress.addPass(report.paths);
                 if (meterExposure && job.isRoot() && !metered) {
-                    pngExposure = autoExposure(Image::fromMeans(session.buffer()));
+                    pngExposure = autoExposure(session.buffer().meanImage());
                     metered = true;
                 }
                 if (progress) {
@@ -151,7 +151,7 @@ void RenderCommand::run() const {
     }
 
     // Every output is encoded before any replaces its file: a failure leaves all of them as they were.
-    const Image image = Image::fromMeans(buffer);
+    const Image image = buffer.meanImage();
     if (metered && std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
             return imageFormatOf(out) == ImageFormat::Png;
         })) {

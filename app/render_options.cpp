@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "bundled_assets.h"
 #include "util/error.h"
@@ -59,6 +60,18 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_flag("--watertight", watertight,
                      "Always trace with Embree's watertight triangle test (default: only where the "
                      "scene's rounding gap share needs it)");
+    command
+        .add_option("--texture-budget", textureBudget,
+                    "GiB that the scene's decoded textures and environment map may take together; a "
+                    "file that would go over is refused before it is decoded")
+        ->capture_default_str()
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                // Finite and positive, and no more than 2^24 GiB, which a byte count holds.
+                const double gib = std::strtod(text.c_str(), nullptr);
+                return gib > 0.0 && gib <= 16777216.0 ? std::string() : "must be a positive number of GiB";
+            },
+            "GIB"));
     command.add_option("--max-triangles", maxTriangles,
                        "Refuse a scene that stores more triangles than this after instancing (a shared "
                        "mesh's once, each instance counted as 3), before reading its geometry")
@@ -99,6 +112,9 @@ std::vector<std::string> RenderOptions::arguments() const {
     }
     if (watertight) args.push_back("--watertight");
     if (allowOutsideFiles) args.push_back("--allow-outside-files");
+    if (textureBudget != defaults.textureBudget) {
+        args.insert(args.end(), {"--texture-budget", text(textureBudget)});
+    }
     if (maxTriangles != defaults.maxTriangles) args.insert(args.end(), {"--max-triangles", std::to_string(maxTriangles)});
     return args;
 }
@@ -158,9 +174,10 @@ BackdropSetting RenderOptions::backdrop() const {
 
 namespace {
 
-// The environment `options` give, its map decoded from `files`; a note on the map to `warnings`.
+// The environment `options` give, its map decoded from `files` within the scene's texture
+// `budget`; a note on the map to `warnings`.
 Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
-                               std::vector<std::string>& warnings) {
+                               const SceneBudget& budget, std::vector<std::string>& warnings) {
     if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
     if (!options.envColor.empty()) {
@@ -176,7 +193,8 @@ Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& 
     } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
         const SceneFile& map = *files.environmentMap;
-        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name);
+        // Checked against the whole budget: the scene's textures are decoded after it.
+        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name, TextureBudget(budget.textureBytes));
         if (file.zeroedNegatives > 0) {
             warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
                                " slightly negative texel components (lossy compression) read as 0");
@@ -189,12 +207,20 @@ Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& 
 
 }  // namespace
 
-LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+SceneBudget RenderOptions::sceneBudget() const {
     if (maxTriangles < 1) throw UsageError("--max-triangles: must be at least 1");
+    SceneBudget budget;
+    budget.triangles = maxTriangles;
+    budget.textureBytes = static_cast<uint64_t>(std::llround(std::ldexp(textureBudget, 30)));
+    return budget;
+}
+
+LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+    const SceneBudget budget = sceneBudget();
     std::vector<std::string> warnings;
-    const Environment given = optionsEnvironment(*this, files, warnings);
+    const Environment given = optionsEnvironment(*this, files, budget, warnings);
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
-                                            SceneBudget{maxTriangles});
+                                            budget);
     loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
     // The --env options override the scene description's environment; without them it stands.
     if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);

@@ -35,6 +35,7 @@ struct RenderOptions {
     double noiseThreshold = 0.0;  // adaptive sampling (film/adaptive_sampling.h); 0: off
     bool watertight = false;      // always Embree's watertight triangle test (traversal_precision.h)
     bool allowOutsideFiles = false;  // read references outside the scene's folder (scene_folder.h)
+    double textureBudget = 4.0;   // --texture-budget, GiB of decoded texels (texture_budget.h)
     uint64_t maxTriangles = SceneBudget{}.triangles;  // the scene's budget (scene_format.h)
 
     // Registers the optional SCENE and the options on `command`.
@@ -50,11 +51,15 @@ struct RenderOptions {
     // file) and the --env map without parsing them, confined to the scene's folder unless
     // allowOutsideFiles (the --env map, the user's own, is not).
     SceneBundle readSceneBundle() const;
-    // Builds the scene from its files, lit by the environment the options give (lights/
-    // environment.h) when they give one, else by the scene description's: the --env map is
-    // decoded from the bundle's copy, and what decoding tolerated joins the load report's
-    // warnings. `environment`, when not null, receives the options' environment (Default when
-    // they give none). Throws strata::Error naming the option or the file.
+    // What the scene may take: --max-triangles, and --texture-budget in bytes; throws
+    // strata::UsageError naming a bad value.
+    SceneBudget sceneBudget() const;
+    // Builds the scene from its files within sceneBudget(), lit by the environment the options
+    // give (lights/environment.h) when they give one, else by the scene description's: the --env
+    // map is decoded from the bundle's copy within the scene's texture budget, and what decoding
+    // tolerated joins the load report's warnings. `environment`, when not null, receives the
+    // options' environment (Default when they give none). Throws strata::Error naming the option
+    // or the file.
     LoadedScene parseScene(SceneBundle files, Environment* environment = nullptr) const;
     // Loads the scene and camera: parseScene(readSceneBundle()).
     LoadedScene loadScene() const;

@@ -70,7 +70,7 @@ void ViewCommand::run() const {
     viewerSettings.environment = environment;
     viewerSettings.traversal = render.watertight ? Traversal::Watertight : Traversal::Automatic;
     viewerSettings.files = render.readOptions();
-    viewerSettings.budget = SceneBudget{render.maxTriangles};
+    viewerSettings.budget = render.sceneBudget();
     viewerSettings.split = split;
     viewerSettings.single = {settings.integrator.sampler, settings.integrator.depth};
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;

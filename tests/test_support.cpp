@@ -3,7 +3,9 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <sstream>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <glm/geometric.hpp>
@@ -55,6 +57,25 @@ std::string forgedTga() {
     tga[2] = 10;  // run-length encoded true colour
     tga[12] = '\x30', tga[13] = '\x0a', tga[14] = '\x76', tga[15] = '\x74', tga[16] = 32;
     return tga + std::string(8, '\x7f');
+}
+
+long peakRssKilobytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+std::set<std::string> includedFolders(const std::string& folder) {
+    const std::regex include(R"re(#include "([a-z_]+)/)re");
+    std::set<std::string> folders;
+    for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "renderer" / folder)) {
+        std::ifstream in(entry.path());
+        for (std::string line; std::getline(in, line);) {
+            std::smatch match;
+            if (std::regex_search(line, match, include)) folders.insert(match[1]);
+        }
+    }
+    return folders;
 }
 
 CommandResult runCommand(const std::string& commandLine) {

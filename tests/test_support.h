@@ -64,6 +64,11 @@ std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
 // would decode it, padding the missing packets, into 1.2 GB (the loader fuzzer's finding).
 std::string forgedTga();
+// The process's peak resident memory so far (getrusage), in KB.
+long peakRssKilobytes();
+// The renderer folders (io, film, ...) that the sources of renderer/`folder` include from, its own
+// among them: what the tests of each folder's place in the library's layering compare.
+std::set<std::string> includedFolders(const std::string& folder);
 // Runs a shell command line, capturing its output.
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).

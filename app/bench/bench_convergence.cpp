@@ -45,7 +45,7 @@ Image renderReference(const LoadedScene& loaded, const Camera& camera, RenderOpt
                               kPathsPerPass);
     renderWithProgress(session, {}, progress);
     progress.finish(session.completedPasses(), session.counters().paths);
-    return Image::fromMeans(session.buffer());
+    return session.buffer().meanImage();
 }
 
 ImageError measure(const Image& image, const Reference& reference) {
@@ -79,7 +79,7 @@ ConvergenceRun runOne(const std::string& label, const LoadedScene& loaded, const
         renderWithProgress(session, {passes * kPathsPerPass}, progress);
         cpuSeconds += processCpuSeconds() - cpuStart;
         // Measured outside the render time.
-        const ImageError error = measure(Image::fromMeans(session.buffer()), reference);
+        const ImageError error = measure(session.buffer().meanImage(), reference);
         const RenderCounters counters = session.counters();
         const double seconds = session.renderSeconds();
         run.checkpoints.push_back(Checkpoint{seconds, cpuSeconds, session.spp(), counters.paths,

@@ -130,7 +130,7 @@ LoadOutcome LoadWorker::load(const LoadRequest& request) {
             outcome.scene = std::move(scene);
         } else {
             enter("reading the map");
-            EnvironmentMapFile map = readEnvironmentMap(request.path);
+            EnvironmentMapFile map = readEnvironmentMap(request.path, TextureBudget(request.budget.textureBytes));
             enter("done");
             outcome.map = std::move(map);
         }

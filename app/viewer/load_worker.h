@@ -27,7 +27,7 @@ struct LoadRequest {
     Kind kind = Kind::Scene;
     std::filesystem::path path;
     Traversal traversal = Traversal::Automatic;  // a scene's triangle test
-    SceneBudget budget;                          // the triangles a scene may store
+    SceneBudget budget;                          // what a scene or map may take
     SceneReadOptions files;                      // what a scene may read (--allow-outside-files)
 };
 

@@ -134,7 +134,7 @@ struct RenderWorker::Job {
     // per sample, strata24's per pass) put uniform's error 2-3 times too high against strata24's.
     double curveError(const Side& side) const {
         const AccumulationBuffer& buffer = side.session.buffer();
-        if (againstReference()) return imageError(Image::fromMeans(buffer), *reference).rmse;
+        if (againstReference()) return imageError(buffer.meanImage(), *reference).rmse;
         double squares = 0.0;
         for (size_t p = 0; p < buffer.pixelCount(); ++p) {
             const double e = buffer.passStandardError(p);

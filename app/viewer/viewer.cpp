@@ -62,7 +62,7 @@ void Viewer::openScene(const std::filesystem::path& path) {
 }
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
-    mapLoader_.start({LoadRequest::Kind::EnvironmentMap, exrPath});
+    mapLoader_.start({LoadRequest::Kind::EnvironmentMap, exrPath, settings_.traversal, settings_.budget});
 }
 
 void Viewer::setWakeCallback(const std::function<void()>& onWake) {

@@ -62,7 +62,7 @@ struct ViewerSettings {
     Traversal traversal = Traversal::Automatic;
     // What every scene opened may read (--allow-outside-files).
     SceneReadOptions files;
-    // The triangle budget of every scene opened (--max-triangles).
+    // What every scene and environment map opened may take (--max-triangles, --texture-budget).
     SceneBudget budget;
 
     // The sides the worker renders in the current mode.

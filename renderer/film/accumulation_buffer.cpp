@@ -5,6 +5,7 @@
 #include <numeric>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "io/image_io.h"
 #include "util/error.h"
 
 namespace strata {
@@ -98,6 +99,17 @@ glm::dvec3 AccumulationBuffer::imageMean() const {
     glm::dvec3 total(0.0);
     for (size_t i = 0; i < pixelCount(); ++i) total += mean(i);
     return total / static_cast<double>(pixelCount());
+}
+
+Image AccumulationBuffer::meanImage() const {
+    Image image{width_, height_, {}};
+    image.pixels.resize(pixelCount());
+    image.alpha.resize(pixelCount());
+    for (size_t i = 0; i < pixelCount(); ++i) {
+        image.pixels[i] = glm::vec3(mean(i));
+        image.alpha[i] = static_cast<float>(coverage(i));
+    }
+    return image;
 }
 
 std::array<std::span<double>, 5> AccumulationBuffer::realArrays() {

@@ -16,7 +16,11 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "util/luminance.h"
+
 namespace strata {
+
+struct Image;
 
 class AccumulationBuffer {
 public:
@@ -46,6 +50,9 @@ public:
     uint64_t droppedSamples() const;
     // Mean of all pixel means (linear RGB).
     glm::dvec3 imageMean() const;
+    // Every pixel's mean as an image (io/image_io.h), as files and image metrics take it: the
+    // film hands its estimate to io, which knows nothing of films.
+    Image meanImage() const;
 
     // The buffer's whole state as flat arrays in a fixed order (the RGB sums as 3 doubles a pixel).
     // Every entry is a sum over samples or passes, so buffers of one image that saw disjoint passes
@@ -69,10 +76,5 @@ private:
     std::vector<double> passMeanSquares_;
     std::vector<uint32_t> passCount_;
 };
-
-// Rec. 709 luminance of linear RGB.
-inline double luminance(const glm::dvec3& rgb) {
-    return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
-}
 
 }  // namespace strata

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "film/accumulation_buffer.h"
+#include "util/luminance.h"
 
 namespace strata {
 

@@ -11,7 +11,7 @@
 #include <ImfOutputFile.h>
 #include <stb_image_write.h>
 
-#include "film/accumulation_buffer.h"
+#include "io/exr_header.h"
 #include "io/output_file.h"
 #include "util/text_file.h"
 #include "util/error.h"
@@ -114,17 +114,6 @@ private:
 
 }  // namespace
 
-Image Image::fromMeans(const AccumulationBuffer& buffer) {
-    Image image{buffer.width(), buffer.height(), {}};
-    image.pixels.resize(buffer.pixelCount());
-    image.alpha.resize(buffer.pixelCount());
-    for (size_t i = 0; i < buffer.pixelCount(); ++i) {
-        image.pixels[i] = glm::vec3(buffer.mean(i));
-        image.alpha[i] = static_cast<float>(buffer.coverage(i));
-    }
-    return image;
-}
-
 ImageFormat imageFormatOf(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -168,14 +157,14 @@ void writeRgb8Png(const std::filesystem::path& path, int width, int height,
     file.commit();
 }
 
-void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name) {
+void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name,
+                               long long maxPixelsPerByte) {
     constexpr long long kMaxPixels = 1LL << 28;
-    constexpr long long kMaxPixelsPerByte = 8 * 1032;
     const std::string size = std::to_string(width) + " x " + std::to_string(height);
     if (width < 1 || height < 1 || width > kMaxPixels / height) {
         throw Error(name + ": unreasonable image size " + size);
     }
-    const auto leastBytes = static_cast<size_t>((width * height + kMaxPixelsPerByte - 1) / kMaxPixelsPerByte);
+    const auto leastBytes = static_cast<size_t>((width * height + maxPixelsPerByte - 1) / maxPixelsPerByte);
     if (fileBytes < leastBytes) {
         throw Error(name + ": a " + size + " image cannot be stored in " + std::to_string(fileBytes) +
                     " bytes (truncated or corrupt)");
@@ -191,15 +180,17 @@ std::string readExrFile(const std::filesystem::path& path) {
 
 Image readExr(std::string_view bytes, const std::string& name) {
     try {
+        const TextureSize size = readExrHeader(bytes, name);
         MemoryStream stream(bytes, name);
         Imf::InputFile in(stream);
         const Imath::Box2i window = in.header().dataWindow();
-        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
-        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
-        requirePlausibleImageSize(width, height, bytes.size(), name);
         Image image;
-        image.width = static_cast<int>(width);
-        image.height = static_cast<int>(height);
+        image.width = window.max.x - window.min.x + 1;
+        image.height = window.max.y - window.min.y + 1;
+        // The one header, read twice: a disagreement would be a library's fault, not the file's.
+        if (image.width != size.width || image.height != size.height) {
+            throw Error(name + ": not a readable EXR file (its data window reads two ways)");
+        }
         for (const char* channel : {"R", "G", "B"}) {
             if (!in.header().channels().findChannel(channel)) {
                 throw Error(name + ": no " + channel + " channel");

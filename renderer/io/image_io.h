@@ -16,16 +16,11 @@
 
 namespace strata {
 
-class AccumulationBuffer;
-
 struct Image {
     int width = 0;
     int height = 0;
     std::vector<glm::vec3> pixels;  // row-major, top row first, linear RGB
     std::vector<float> alpha{};     // the same order, or empty: none
-
-    // The buffer's means, and its coverage as the alpha.
-    static Image fromMeans(const AccumulationBuffer& buffer);
 };
 
 struct PngSettings {
@@ -47,13 +42,18 @@ void writeImage(OutputFile& file, const Image& image, const PngSettings& png = {
 // Writes already display-encoded 8-bit RGB (top row first) as PNG, e.g. a screenshot of the viewer.
 void writeRgb8Png(const std::filesystem::path& path, int width, int height,
                   const std::vector<uint8_t>& rgb);
+// The densest coding any reader here decodes without a tighter bound of its own: a 1-bit PNG at
+// deflate's best ratio (1032:1), 8256 pixels a byte.
+inline constexpr long long kDensestPixelsPerByte = 8 * 1032;
 // Throws strata::Error "NAME: ..." unless a width x height image could be held in `fileBytes`
-// bytes: at most 2^28 pixels (16k x 16k), and no more than the densest coding any reader here
-// decodes allows, a 1-bit PNG at deflate's best ratio (1032:1), 8256 pixels a byte. A forged or
-// truncated header then fails at once instead of allocating for pixels the file does not hold.
-void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name);
+// bytes: at most 2^28 pixels (16k x 16k), and no more than `maxPixelsPerByte`, the densest coding
+// of the file's format, allows. A forged or truncated header then fails at once instead of
+// allocating for pixels the file does not hold.
+void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name,
+                               long long maxPixelsPerByte = kDensestPixelsPerByte);
 // Reads the R, G, B (and A, when there is one) channels of an EXR file as linear float; throws
-// strata::Error naming the file.
+// strata::Error naming the file, before anything is allocated for a header the file does not hold
+// the pixels of (readExrHeader).
 Image readExr(const std::filesystem::path& path);
 // The bytes of an EXR file, undecoded; throws strata::Error "PATH: no such EXR file" or
 // "PATH: cannot open EXR file".

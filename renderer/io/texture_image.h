@@ -1,32 +1,37 @@
 #pragma once
-// Texture files decoded into linear float textures (textures/texture.h): PNG, JPEG, TGA and BMP
-// through stb_image at 8 bits per channel, EXR through OpenEXR (io/image_io.h's reader).
+// Texture files decoded into textures (textures/texture.h): JPEG through libjpeg
+// (io/jpeg_image.h), PNG, TGA, BMP, GIF (its first frame), PSD and PNM through stb_image, all at
+// 8 bits a channel and kept so; EXR through OpenEXR (io/image_io.h's reader) as floats.
 //
-// 8-bit colour textures (base colour, diffuse, emission) hold sRGB-encoded values and are decoded
-// with the exact sRGB curve through a 256-entry table; their alpha channel, and every channel of a
-// data texture (coverage, normals, roughness/metallic), is linear, code / 255. stb_image's own
+// 8-bit colour textures (base colour, diffuse, emission) hold sRGB-encoded values, decoded at
+// lookup with the exact sRGB curve (srgbDecodingTable); their alpha channel, and every channel of
+// a data texture (coverage, normals, roughness/metallic), is linear, code / 255. stb_image's own
 // float loader is not used: it applies a plain 2.2 gamma to every channel. EXR texels are linear
 // already and taken as they are.
-#include <array>
-#include <cstdint>
+//
+// A file's header is read first (readTextureHeader), so that a size the file cannot hold is
+// refused, and a scene's texture budget applied (textures/texture_budget.h), before anything is
+// allocated for its texels.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "textures/texture.h"
 
 namespace strata {
 
-enum class TextureEncoding {
-    Colour,  // 8-bit RGB is sRGB-encoded
-    Data,    // every channel linear
-};
-
-// The sRGB decoding of each 8-bit code (IEC 61966-2-1):
-// c / 12.92 for c = code / 255 <= 0.04045, else ((c + 0.055) / 1.055)^2.4.
-const std::array<float, 256>& srgbDecodingTable();
+// The size of the texture decodeTexture makes of `bytes`, from the file's header and structure
+// alone. Throws strata::Error "NAME: ..." for bytes no decoder reads, a size beyond 2^28 texels,
+// or one the file cannot hold: more texels than the densest coding of its format packs into its
+// bytes (requirePlausibleImageSize, io/image_io.h), an EXR's missing chunks, a GIF whose first
+// frame's data is too short for it.
+TextureSize readTextureHeader(std::string_view bytes, const std::string& name);
 
 // The texture in a file's bytes; `name` stands for the file in messages. Throws strata::Error
-// "NAME: cannot decode the texture (REASON)" for bytes no decoder reads.
-Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEncoding encoding);
+// "NAME: cannot decode the texture (REASON)" (or readTextureHeader's or readExr's error) for bytes
+// no decoder reads. A file that decodes despite damage (a truncated JPEG or GIF, whose missing
+// part decodes grey or blank) adds one line "NAME: ..." saying so to `warnings`.
+Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEncoding encoding,
+                      std::vector<std::string>& warnings);
 
 }  // namespace strata

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "io/exr_header.h"
 #include "io/image_io.h"
 #include "lights/environment_map_light.h"
 #include "lights/uniform_environment_light.h"
 #include "util/error.h"
+#include "util/text_file.h"
 
 namespace strata {
 namespace {
@@ -45,7 +47,6 @@ EnvironmentMapFile checkedMap(Image map, const std::string& name) {
     return file;
 }
 
-
 }  // namespace
 
 Environment resolveEnvironment(const Environment& given, bool lightsOutshineSky) {
@@ -82,11 +83,13 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
     return nullptr;
 }
 
-EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
-    return checkedMap(readExr(path), path.string());
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path, TextureBudget budget) {
+    if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
+    return readEnvironmentMap(readTextFile(path, "EXR file"), path.string(), budget);
 }
 
-EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name) {
+EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name, TextureBudget budget) {
+    budget.reserve(readExrHeader(bytes, name), name + ": the environment map");
     return checkedMap(readExr(bytes, name), name);
 }
 

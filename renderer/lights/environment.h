@@ -15,6 +15,7 @@
 
 #include "lights/environment_map.h"
 #include "lights/light.h"
+#include "textures/texture_budget.h"
 
 namespace strata {
 
@@ -51,9 +52,13 @@ struct EnvironmentMapFile {
 };
 // Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
 // finite and >= 0, lossy-compression noise read as 0. Throws strata::Error naming the file for
-// any other image: not 2:1, a texel more negative than that noise, or one not finite.
-EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
+// any other image: not 2:1, a texel more negative than that noise, or one not finite; and,
+// before its texels are allocated, for one that would take `budget` over its limit (its texels
+// count with the scene's textures, TextureBudget::reserve).
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path,
+                                      TextureBudget budget = TextureBudget());
 // The same from the EXR file's bytes, as a scene bundle carries them; `name` stands for the file.
-EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name);
+EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name,
+                                      TextureBudget budget = TextureBudget());
 
 }  // namespace strata

@@ -28,7 +28,7 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path, SceneFol
 // The format's parsing: the bundle's first file as the glTF (JSON or binary), its URIs resolved
 // among the bundle's files and never on the file system. Throws strata::Error naming the file
 // and the mesh, node, accessor, material or extension that Strata cannot render, or the budget
-// its triangles exceed.
+// its triangles exceed, or the texture that would take the scene's textures over `budget`.
 ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report = nullptr, const SceneBudget& budget = {});
 
 }  // namespace strata

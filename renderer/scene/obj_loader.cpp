@@ -509,7 +509,7 @@ void addTextures(Material& material, const MtlMaterial& source, const std::strin
 MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const std::string& objName,
                    const ObjScan& scan, const std::vector<MtlMaterial>& materials,
                    const std::vector<std::string>& mtlNames, const std::string& mtlText,
-                   std::vector<std::string> warnings, LoadReport* report) {
+                   std::vector<std::string> warnings, LoadReport* report, const SceneBudget& budget) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
@@ -534,7 +534,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     for (size_t v : scan.nonFiniteVertices) {
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
-    SceneTextures textures(bundle, warnings);
+    SceneTextures textures(bundle, warnings, TextureBudget(budget.textureBytes));
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
         if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
@@ -641,6 +641,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         report->faces = mesh.triangles.size();
         report->droppedTriangles = dropped;
         report->nonFiniteVertices = scan.nonFiniteVertices.size();
+        report->textureBytes = textures.budget().used();
         report->warnings = std::move(warnings);
     }
     return mesh;
@@ -663,7 +664,8 @@ MeshData parseObj(const std::string& objText, const std::string& objName,
     // No files besides: the textures the MTL names are missing (warnings).
     const SceneBundle bundle{objName, {}, std::nullopt, std::nullopt};
     const std::vector<std::string> mtlNames(materials.size(), mtlName);
-    return buildMesh(bundle, objText, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report);
+    return buildMesh(bundle, objText, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report,
+                     SceneBudget{});
 }
 
 std::vector<SceneFile> readObjScene(const std::filesystem::path& path, SceneFolder& folder) {
@@ -719,7 +721,8 @@ MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report, const Scen
         scanMtl(mtl->bytes, bundle.pathOf(library.name), materials, tinyobjMtl, warnings);
         mtlNames.resize(materials.size(), library.name);
     }
-    return buildMesh(bundle, obj.bytes, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report);
+    return buildMesh(bundle, obj.bytes, objName, scan, materials, mtlNames, tinyobjMtl, std::move(warnings), report,
+                     budget);
 }
 
 MeshData loadObjFile(const std::filesystem::path& path, LoadReport* report) {

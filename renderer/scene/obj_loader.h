@@ -24,7 +24,8 @@ std::vector<SceneFile> readObjScene(const std::filesystem::path& path, SceneFold
 // The format's parsing: the bundle's first file as the OBJ and, from the others, the MTL files its
 // `mtllib` lines name; a library not among them is a warning. Fills `triangleNormals` from the vn
 // of faces that give one on every corner. Throws strata::Error naming the file and line on
-// malformed input, or the budget its faces exceed (counted before any is read into the mesh).
+// malformed input, or the budget its faces exceed (counted before any is read into the mesh), or
+// a texture that would take the scene's textures over `budget`.
 MeshData parseObjScene(const SceneBundle& bundle, LoadReport* report = nullptr, const SceneBudget& budget = {});
 
 // readObjScene then parseObjScene.

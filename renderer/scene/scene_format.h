@@ -13,6 +13,7 @@
 
 #include "scene/camera.h"
 #include "scene/mesh.h"
+#include "textures/texture_budget.h"
 #include "scene/model_orientation.h"
 #include "scene/scene_folder.h"
 
@@ -22,6 +23,7 @@ struct LoadReport {
     size_t faces = 0;             // triangles read
     size_t droppedTriangles = 0;  // degenerate ones removed (zero area, non-finite vertices)
     size_t nonFiniteVertices = 0; // vertices with a nan/inf coordinate (their triangles dropped)
+    uint64_t textureBytes = 0;    // the decoded texels of the materials' textures (texture_budget.h)
     // What was tolerated and how, or what the scene file holds that Strata does not render (yet),
     // one line each naming the file and line where there is one:
     // "cube.obj:12: material 'red' is not defined; using grey Kd 0.8".
@@ -36,8 +38,12 @@ struct LoadReport {
 // Embree instance and its record, about 570 bytes however large its mesh (10^3 to 10^4 instances
 // of one 10^4-triangle grid: 17.0 to 22.1 MB; scripts/make_instancing_case.py). The default is
 // what a desktop survives: some 9 GB.
+//
+// Decoded texels, all the scene's textures and its environment map together, are budgeted as
+// well (textures/texture_budget.h), refused before the file that would go over is decoded.
 struct SceneBudget {
-    uint64_t triangles = 50'000'000;
+    uint64_t triangles = 50'000'000;                // --max-triangles
+    uint64_t textureBytes = kDefaultTextureBudget;  // --texture-budget
 };
 inline constexpr uint64_t kTrianglesPerInstance = 3;
 
@@ -101,8 +107,9 @@ struct SceneFormat {
     // (scene_folder.h: the main file's folder, which refuses references that leave it); throws
     // strata::Error naming a missing or malformed file or a refused reference.
     std::vector<SceneFile> (*read)(const std::filesystem::path& path, SceneFolder& folder);
-    // The mesh (and camera) from a bundle's files; throws strata::Error naming the file (and line),
-    // or the budget the scene exceeds (before reading its geometry).
+    // The mesh (and camera) from a bundle's files, its textures within `budget`; throws
+    // strata::Error naming the file (and line), or the budget the scene exceeds (triangles before
+    // reading its geometry, texels before decoding a texture).
     ParsedScene (*parse)(const SceneBundle& bundle, LoadReport* report, const SceneBudget& budget);
 };
 

@@ -19,15 +19,17 @@ bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
 }
 
 // The description's environment, a map decoded from the bundle's copy of its file, so that every
-// MPI rank lights the scene with the same bytes.
+// MPI rank lights the scene with the same bytes; its texels count with the textures' against the
+// budget.
 Environment describedEnvironment(const SceneDescription& description, const SceneBundle& bundle,
-                                 LoadReport& report) {
+                                 const SceneBudget& budget, LoadReport& report) {
     Environment environment = description.environment;
     if (environment.kind != Environment::Kind::Map) return environment;
     const std::string name = bundle.pathOf(description.environmentFile);
     const SceneFile* file = bundle.find(description.environmentFile);
     if (!file) throw Error(name + ": no such EXR file (the scene description's \"environment\")");
-    const EnvironmentMapFile map = readEnvironmentMap(file->bytes, name);
+    const EnvironmentMapFile map =
+        readEnvironmentMap(file->bytes, name, TextureBudget(budget.textureBytes, report.textureBytes));
     if (map.zeroedNegatives > 0) {
         report.warnings.push_back(name + ": " + std::to_string(map.zeroedNegatives) +
                                   " slightly negative texel components (lossy compression) read as 0");
@@ -88,7 +90,7 @@ SceneContents parseSceneContents(const SceneBundle& bundle, const SceneBudget& b
     }
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
-    mesh.environment = describedEnvironment(description, bundle, report);
+    mesh.environment = describedEnvironment(description, bundle, budget, report);
     contents.settings = description.camera;
     contents.posed = description.hasPose;
     if (bundle.camera) {

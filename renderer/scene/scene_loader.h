@@ -55,7 +55,10 @@ enum class ParseStage { Parsing, Building };
 // by the main file's format, the point lights of the description and of the camera file's
 // "point_lights", the camera from the camera file, else the description, else the scene file's
 // own (glTF), else the default camera (default_camera.h); `traversal` picks Embree's triangle test
-// (traversal_precision.h). Throws as parseSceneContents does. `onStage`, when given, is called
+// (traversal_precision.h); the textures and the description's environment map are decoded
+// within `budget`. Throws as parseSceneContents does: strata::Error naming the bad file, or the
+// budget the scene exceeds (scene_format.h): its triangles before its geometry is read, the
+// texture or map that would go over it before that is decoded. `onStage`, when given, is called
 // as each stage begins; an exception it throws ends the parse there (how the viewer cancels a
 // load between stages).
 LoadedScene parseScene(SceneBundle bundle, Traversal traversal = Traversal::Automatic,

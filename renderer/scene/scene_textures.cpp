@@ -1,8 +1,10 @@
 #include "scene/scene_textures.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "util/error.h"
 #include "util/printable.h"
@@ -53,9 +55,7 @@ std::shared_ptr<const Texture> SceneTextures::file(const std::string& name, Text
                                                    const std::string& where) {
     const SceneFile* found = bundle_.find(name);
     if (!found) {
-        const std::string line =
-            where + ": texture file " + quote(name) + " is missing; using the factor alone";
-        if (std::find(warnings_.begin(), warnings_.end(), line) == warnings_.end()) warnings_.push_back(line);
+        warnOnce(where + ": texture file " + quote(name) + " is missing; using the factor alone");
         return nullptr;
     }
     return bytes(name, found->bytes, encoding, where);
@@ -65,12 +65,28 @@ std::shared_ptr<const Texture> SceneTextures::bytes(const std::string& key, std:
                                                     TextureEncoding encoding, const std::string& where) {
     const auto cached = decoded_.find({key, encoding});
     if (cached != decoded_.end()) return cached->second;
-    std::shared_ptr<const Texture> texture;
-    try {
-        // Named as the scene names it: `where` already says which file refers to it.
-        texture = std::make_shared<const Texture>(decodeTexture(data, printable(key), encoding));
-    } catch (const Error& error) {
+    // Named as the scene names it: `where` already says which file refers to it.
+    const auto unusable = [&](const Error& error) {
         warnings_.push_back(where + ": " + error.what() + "; using the factor alone");
+    };
+    std::shared_ptr<const Texture> texture;
+    std::optional<TextureSize> size;
+    try {
+        size = readTextureHeader(data, printable(key));
+    } catch (const Error& error) {
+        unusable(error);
+    }
+    if (size) {
+        budget_.reserve(*size, where + ": texture " + quote(key));
+        try {
+            std::vector<std::string> damage;
+            texture = std::make_shared<const Texture>(decodeTexture(data, printable(key), encoding, damage));
+            if (!damage.empty() && damaged_.insert(key).second) {
+                for (const std::string& line : damage) warnings_.push_back(where + ": " + line);
+            }
+        } catch (const Error& error) {
+            unusable(error);
+        }
     }
     if (texture && isExr(data)) {
         FiniteTexture finite = finiteNonNegative(*texture);
@@ -84,6 +100,10 @@ std::shared_ptr<const Texture> SceneTextures::bytes(const std::string& key, std:
     }
     decoded_.emplace(std::make_pair(key, encoding), texture);
     return texture;
+}
+
+void SceneTextures::warnOnce(const std::string& line) {
+    if (std::find(warnings_.begin(), warnings_.end(), line) == warnings_.end()) warnings_.push_back(line);
 }
 
 }  // namespace strata

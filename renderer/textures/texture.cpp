@@ -7,38 +7,95 @@
 
 namespace strata {
 namespace {
+
 int wrap(int i, int n) {
     const int r = i % n;
     return r < 0 ? r + n : r;
 }
-}  // namespace
 
-Texture::Texture(int width, int height, int channels, std::vector<float> texels)
-    : width_(width), height_(height), channels_(channels), texels_(std::move(texels)) {
-    if (width < 1 || height < 1 || channels < 1 || channels > 4 ||
-        texels_.size() != static_cast<size_t>(width) * height * channels) {
-        throw Error("a texture's size does not match its texels");
-    }
-    glm::dvec4 sum(0.0);
-    max_ = glm::vec4(-INFINITY);
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) {
-            const glm::vec4 t = texel(x, y);
-            sum += glm::dvec4(t);
-            max_ = glm::max(max_, t);
+// code / 255 in float, as the division gives it.
+const std::array<float, 256>& linearDecodingTable() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int code = 0; code < 256; ++code) {
+            t[static_cast<size_t>(code)] = static_cast<float>(code) / 255.0f;
         }
-    }
-    mean_ = glm::vec4(sum / (static_cast<double>(width_) * height_));
+        return t;
+    }();
+    return table;
 }
 
-glm::vec4 Texture::texel(int x, int y) const {
-    const float* t = texels_.data() + (static_cast<size_t>(wrap(y, height_)) * width_ + wrap(x, width_)) * channels_;
+void requireMatchingSize(int width, int height, int channels, size_t values) {
+    if (width < 1 || height < 1 || channels < 1 || channels > 4 ||
+        values != static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels)) {
+        throw Error("a texture's size does not match its texels");
+    }
+}
+
+}  // namespace
+
+const std::array<float, 256>& srgbDecodingTable() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int code = 0; code < 256; ++code) {
+            const double c = code / 255.0;
+            t[static_cast<size_t>(code)] =
+                static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+        }
+        return t;
+    }();
+    return table;
+}
+
+Texture::Texture(int width, int height, int channels, std::vector<float> texels)
+    : width_(width), height_(height), channels_(channels), floats_(std::move(texels)) {
+    requireMatchingSize(width, height, channels, floats_.size());
+    computeStatistics();
+}
+
+Texture::Texture(int width, int height, int channels, std::vector<uint8_t> codes, TextureEncoding encoding)
+    : width_(width), height_(height), channels_(channels), codes_(std::move(codes)) {
+    requireMatchingSize(width, height, channels, codes_.size());
+    // Grey and grey-alpha images have their colour in channel 0 only; the last of 2 or 4 is alpha.
+    const int colourChannels = channels == 1 || channels == 3 ? channels : channels - 1;
+    for (int c = 0; c < channels; ++c) {
+        const bool srgb = encoding == TextureEncoding::Colour && c < colourChannels;
+        decoding_[static_cast<size_t>(c)] = (srgb ? srgbDecodingTable() : linearDecodingTable()).data();
+    }
+    computeStatistics();
+}
+
+void Texture::computeStatistics() {
+    glm::dvec4 sum(0.0);
+    max_ = glm::vec4(-INFINITY);
+    const size_t texels = static_cast<size_t>(width_) * static_cast<size_t>(height_);
+    for (size_t i = 0; i < texels; ++i) {
+        const glm::vec4 t = texelAt(i);
+        sum += glm::dvec4(t);
+        max_ = glm::max(max_, t);
+    }
+    mean_ = glm::vec4(sum / static_cast<double>(texels));
+}
+
+glm::vec4 Texture::texelAt(size_t texel) const {
+    const size_t first = texel * static_cast<size_t>(channels_);
+    float t[4];
+    if (codes_.empty()) {
+        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = floats_[first + c];
+    } else {
+        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = decoding_[c][codes_[first + c]];
+    }
     switch (channels_) {
         case 1: return {t[0], t[0], t[0], 1.0f};
         case 2: return {t[0], t[0], t[0], t[1]};
         case 3: return {t[0], t[1], t[2], 1.0f};
         default: return {t[0], t[1], t[2], t[3]};
     }
+}
+
+glm::vec4 Texture::texel(int x, int y) const {
+    const auto row = static_cast<size_t>(wrap(y, height_));
+    return texelAt(row * static_cast<size_t>(width_) + static_cast<size_t>(wrap(x, width_)));
 }
 
 glm::vec4 Texture::lookup(glm::vec2 uv) const {

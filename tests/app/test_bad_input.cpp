@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "util/error.h"
+#include "image_support.h"
 #include "io/image_io.h"
 #include "test_support.h"
 
@@ -243,6 +244,18 @@ const std::vector<BadInputCase> kCliCases = {
      kBadUsage},
     {"--env-rotate not finite", {}, "render {dir}/s.obj --env-rotate inf", "--env-rotate: must be a finite angle",
      kBadUsage},
+    {"--env map claiming 23170 x 11585 pixels in 93 KB without pixel data", {{"sky.exr", test::forgedExr(23170, 11585)}},
+     "render {dir}/s.obj --env {dir}/sky.exr",
+     "sky.exr: not a readable EXR file (23170 x 11585 pixels, but chunk 1 of 11585 of their data lies outside the "
+     "file's 92993 bytes: truncated or corrupt)"},
+    // Texture budget
+    {"texture over --texture-budget",
+     {{"s.mtl", kMtl + "map_Kd t.png\n"}, {"t.png", test::pngFile(64, 64, 8, 2, std::string(64 * (1 + 64 * 3), '\0'))}},
+     "render {dir}/s.obj --texture-budget 0.00001",
+     "s.mtl:4: map_Kd: texture 't.png' is 64 x 64, 3 channels of 8 bits (12.0 KiB); with it the scene's textures "
+     "would take 12.0 KiB, over the --texture-budget of 10.5 KiB"},
+    {"render --texture-budget 0", {}, "render {dir}/s.obj --texture-budget 0",
+     "--texture-budget: must be a positive number of GiB", kBadUsage},
     {"unknown subcommand", {}, "paint", "unknown command 'paint' (see strata --help)", kBadUsage},
     {"mistyped subcommand", {}, "rendr", "unknown command 'rendr'; did you mean 'render'?", kBadUsage},
     // strata view options (checked before any window or context opens)
@@ -320,6 +333,20 @@ const std::vector<ToleratedCase> kToleratedCases = {
     {"MTL texture that does not decode",
      {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd bad.png\n"}, {"bad.png", "\x89PNG\r\n\x1a\nbroken"}},
      {"s.mtl:4: map_Kd: bad.png: cannot decode the texture (unknown image type); using the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a GIF claiming 16384 x 16384 pixels in 40 KB",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd big.gif\n"}, {"big.gif", test::forgedGif(16384, 16384, 40000)}},
+     {"s.mtl:4: map_Kd: big.gif: a 16384 x 16384 image cannot be stored in 40000 bytes (truncated or corrupt); using "
+      "the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a JPEG claiming 16384 x 16384 pixels in 40 KB",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd big.jpg\n"}, {"big.jpg", test::forgedJpeg(16384, 16384, 40960)}},
+     {"s.mtl:4: map_Kd: big.jpg: a 16384 x 16384 image cannot be stored in 40960 bytes (truncated or corrupt); using "
+      "the factor alone"},
+     "2 emitting"},
+    {"MTL texture: a truncated JPEG",
+     {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd cut.jpg\n"}, {"cut.jpg", test::truncatedJpeg()}},
+     {"s.mtl:4: map_Kd: cut.jpg: damaged or truncated JPEG (libjpeg: Corrupt JPEG data: premature end of data segment)"},
      "2 emitting"},
     {"MTL texture whose header claims more texels than its file holds",
      {{"s.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Kd t.tga\n"}, {"t.tga", test::forgedTga()}},

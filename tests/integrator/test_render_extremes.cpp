@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <thread>
-#include <sys/resource.h>
 #include <glm/geometric.hpp>
 
 #include "render_support.h"
@@ -48,12 +47,6 @@ void checkFurnaceMean(const AccumulationBuffer& buffer, double exact) {
     CHECK(std::abs(estimate.mean - exact) < 4.0 * estimate.standardError);
 }
 
-long peakRssKilobytes() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss;
-}
-
 }  // namespace
 
 TEST_CASE("render extremes: emission of 1e30 scales the image exactly, with nothing non-finite") {
@@ -93,14 +86,14 @@ TEST_CASE("render extremes: depth 0 shows the emission only, depth 10000 runs in
     // rho = 0.5: 2 (1 - 0.5^10001) = 2 in double. The path weight underflows to 0 after some
     // hundred bounces, which ends the path (path_integrator.cpp): no recursion, no per-bounce
     // allocation, so the peak RSS does not grow with the depth.
-    const long before = peakRssKilobytes();
+    const long before = test::peakRssKilobytes();
     checkFurnaceMean(test::renderPasses(furnace, camera, withDepth(10000), 8), 2.0);
     // Albedo 1 keeps the expected weight at 1, so paths run much deeper before underflowing.
     const AccumulationBuffer deep = test::renderPasses(furnaceWith(glm::vec3(1.0f), glm::vec3(1.0f)),
                                                        furnaceCamera(2, 2), withDepth(10000), 2);
     CHECK(test::allFinite(deep));
     CHECK(deep.droppedSamples() == 0);
-    const long grown = peakRssKilobytes() - before;
+    const long grown = test::peakRssKilobytes() - before;
     CAPTURE(grown);
     CHECK(grown < 64 * 1024);
 }

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <set>
 #include <unistd.h>
 
 #include "film/accumulation_buffer.h"
@@ -45,7 +46,7 @@ TEST_CASE("image io: an image's alpha goes to the EXR's A channel and back, a re
     buffer.addSample(0, glm::vec3(1.0f), true);
     buffer.addSample(0, glm::vec3(0.5f), false);
     buffer.addSample(1, glm::vec3(0.5f), false);
-    const Image means = Image::fromMeans(buffer);
+    const Image means = buffer.meanImage();
     CHECK(means.alpha == std::vector<float>{0.5f, 0.0f});
     CHECK(means.pixels[0] == glm::vec3(0.75f));
 }
@@ -137,6 +138,12 @@ TEST_CASE("image io: an image's size must fit 2^28 pixels and its file's bytes")
     CHECK_THROWS_WITH_AS(requirePlausibleImageSize(0, 5, 100, "empty.exr"), "empty.exr: unreasonable image size 0 x 5",
                          Error);
     CHECK_THROWS_AS(requirePlausibleImageSize(-4, -4, 100, "negative.exr"), Error);
+}
+
+TEST_CASE("image io: io knows files and images, not the film: its includes go to io, textures and util only") {
+    // The film develops into an io Image (AccumulationBuffer::meanImage); io reads and writes
+    // images for film, lights and textures alike, so it may include none of them but textures.
+    CHECK(test::includedFolders("io") == std::set<std::string>{"io", "textures", "util"});
 }
 
 TEST_CASE("tonemap: sRGB encoding and curves at known points") {

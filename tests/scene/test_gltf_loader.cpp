@@ -639,8 +639,8 @@ TEST_CASE("gltf: the triangle budget counts stored triangles and instances from 
     model.meshNode(primitive);
     model.addNode({{"mesh", 0}});  // the same primitive again: stored once, placed twice
     model.meshNode(primitive, {{"scale", {2, 2, 2}}});
-    CHECK_NOTHROW(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{10}));
-    CHECK_THROWS_WITH_AS(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{9}),
+    CHECK_NOTHROW(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{.triangles = 10}));
+    CHECK_THROWS_WITH_AS(parseGltfScene(bundleOf(model.gltf()), nullptr, SceneBudget{.triangles = 9}),
                          "mem/model.gltf: 1 triangle after instancing and 3 instances (counted as 3 triangles each; "
                          "3 triangles placed) exceed the budget of 9 triangles (--max-triangles N raises it)",
                          Error);

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <stb_image_write.h>
 
 #include "film/accumulation_buffer.h"
 #include "io/image_io.h"
@@ -193,6 +194,24 @@ TEST_CASE("scene loader: a description's environment map travels in the bundle a
     const double mean = renderedMean(described);
     CHECK(mean == renderedMean(given));
     CHECK(mean != defaultSky);
+}
+
+TEST_CASE("scene loader: the description's environment map counts with the textures against the budget") {
+    const auto dir = test::scratchDir("scene-environment-budget");
+    writeSkyScene(dir, R"(,"environment":{"file":"maps/sky.exr"})");
+    std::ofstream(dir / "s.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\nmap_Kd t.png\n";
+    const std::vector<unsigned char> texels(8 * 8 * 3, 100);
+    REQUIRE(stbi_write_png((dir / "t.png").string().c_str(), 8, 8, 3, texels.data(), 8 * 3));
+    const SceneBundle bundle = readSceneBundle(dir / "s.obj");
+    // The texture: 8 x 8 x 3 bytes; the map: 8 x 4 x 3 floats.
+    const LoadedScene loaded = parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 192 + 384});
+    CHECK(loaded.report.textureBytes == 192);
+    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 192 + 383}),
+                         doctest::Contains("sky.exr: the environment map is 8 x 4, 3 channels of 32 bits (384 bytes); "
+                                           "with it the scene's textures would take 576 bytes, over the --texture-budget of 575 bytes"),
+                         Error);
+    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 191}),
+                         doctest::Contains("s.mtl:3: map_Kd: texture 't.png' is 8 x 8, 3 channels of 8 bits"), Error);
 }
 
 TEST_CASE("scene loader: a description's environment file that is missing or not a map is named") {

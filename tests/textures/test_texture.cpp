@@ -1,9 +1,15 @@
 // Bilinear lookups with repeat wrap (textures/texture.h): exact at texel centres, the linear blend
-// between them, across the wrapped edge, and the v-up convention.
+// between them, across the wrapped edge, and the v-up convention; 8-bit storage read as the floats
+// of its decoded copy, bit for bit, in a quarter of the memory.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
 #include <vector>
 
+#include "test_support.h"
 #include "textures/texture.h"
 #include "util/error.h"
 
@@ -12,7 +18,58 @@ using namespace strata;
 namespace {
 // 2 x 2, one channel: top row 0, 1; bottom row 2, 3.
 Texture twoByTwo() { return Texture(2, 2, 1, {0.0f, 1.0f, 2.0f, 3.0f}); }
+
+double srgbCurve(int code) {
+    const double c = code / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
 }  // namespace
+
+TEST_CASE("the sRGB table is the exact curve") {
+    const auto& table = srgbDecodingTable();
+    for (int code : {0, 1, 10, 128, 255}) {
+        CHECK(table[static_cast<size_t>(code)] == static_cast<float>(srgbCurve(code)));
+    }
+    CHECK(table[0] == 0.0f);
+    CHECK(table[255] == 1.0f);
+    CHECK(table[10] == static_cast<float>(10.0 / 255.0 / 12.92));  // the linear segment
+}
+
+TEST_CASE("an 8-bit texture reads, bit for bit, the floats its decoded copy holds, in a quarter of the memory") {
+    // The copy as textures were decoded at load before they were kept at 8 bits: sRGB colour
+    // channels through the table, alpha and data channels code / 255, then filtered.
+    std::mt19937 random(3);
+    for (const TextureEncoding encoding : {TextureEncoding::Colour, TextureEncoding::Data}) {
+        for (int channels = 1; channels <= 4; ++channels) {
+            CAPTURE(channels);
+            const int width = 7, height = 5;
+            std::vector<uint8_t> codes(static_cast<size_t>(width * height * channels));
+            for (uint8_t& code : codes) code = static_cast<uint8_t>(random() & 0xff);
+            const int colourChannels = channels == 1 || channels == 3 ? channels : channels - 1;
+            std::vector<float> decoded(codes.size());
+            for (size_t i = 0; i < codes.size(); ++i) {
+                const auto channel = static_cast<int>(i % static_cast<size_t>(channels));
+                const bool srgb = encoding == TextureEncoding::Colour && channel < colourChannels;
+                decoded[i] = srgb ? srgbDecodingTable()[codes[i]] : static_cast<float>(codes[i]) / 255.0f;
+            }
+            const Texture floats(width, height, channels, decoded);
+            const Texture bytes(width, height, channels, codes, encoding);
+            CHECK(bytes.size().bytes() == codes.size());
+            CHECK(floats.size().bytes() == 4 * codes.size());
+            CHECK(bytes.mean() == floats.mean());
+            CHECK(bytes.max() == floats.max());
+            for (int y = 0; y < height; ++y) {
+                for (int x = 0; x < width; ++x) CHECK(bytes.texel(x, y) == floats.texel(x, y));
+            }
+            std::uniform_real_distribution<float> uv(-2.0f, 3.0f);
+            for (int i = 0; i < 200; ++i) {
+                const glm::vec2 at(uv(random), uv(random));
+                CHECK(bytes.lookup(at) == floats.lookup(at));
+            }
+        }
+    }
+    CHECK_THROWS_AS(Texture(2, 2, 1, std::vector<uint8_t>{1, 2, 3}, TextureEncoding::Data), Error);
+}
 
 TEST_CASE("texture lookups at texel centres return the texels, v up from the bottom row") {
     const Texture t = twoByTwo();
@@ -51,4 +108,10 @@ TEST_CASE("texture statistics and channel layouts") {
     // A non-finite UV reads a texel rather than an out-of-range index.
     CHECK(t.lookup({std::numeric_limits<float>::quiet_NaN(), 0.5f}).x == 0.0f);
     CHECK_THROWS_AS(Texture(2, 2, 1, {1.0f}), Error);
+}
+
+TEST_CASE("textures know texels, not files: their includes go to textures and util only") {
+    // The decoders (io/texture_image.h) make textures and the budget counts them; a texture
+    // knows neither, so io and scene build on textures and never the other way round.
+    CHECK(test::includedFolders("textures") == std::set<std::string>{"textures", "util"});
 }

@@ -148,7 +148,7 @@ TEST_CASE("render worker: its error against a reference is imageError's RMSE of 
     const Camera camera(config.pose, config.width, config.height);
     RenderSession session(config.scene->scene, camera, renderSettings(config, config.sides.at(0)));
     session.run({config.targetSpp});
-    const ImageError error = imageError(Image::fromMeans(session.buffer()), *reference);
+    const ImageError error = imageError(session.buffer().meanImage(), *reference);
     CHECK(error.rmse > 0.1);
     CHECK(history.back().error == error.rmse);
 }
