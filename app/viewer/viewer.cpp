@@ -62,7 +62,8 @@ void Viewer::openScene(const std::filesystem::path& path) {
 }
 
 void Viewer::openEnvironmentMap(const std::filesystem::path& exrPath) {
-    mapLoader_.start({LoadRequest::Kind::EnvironmentMap, exrPath, settings_.traversal, settings_.budget});
+    mapLoader_.start(
+        {LoadRequest::Kind::EnvironmentMap, exrPath, settings_.traversal, settings_.budget, settings_.files});
 }
 
 void Viewer::setWakeCallback(const std::function<void()>& onWake) {
