@@ -7,19 +7,16 @@
 #include <glm/vec3.hpp>
 
 #include "materials/bsdf_sample.h"
+#include "materials/delta_lobes.h"
 
 namespace strata {
 
-class SmoothConductor {
+class SmoothConductor : public DeltaLobes {
 public:
     explicit SmoothConductor(const glm::vec3& f0) : f0_(f0) {}
 
     bool isBlack() const { return f0_.x == 0.0f && f0_.y == 0.0f && f0_.z == 0.0f; }
     BsdfFlags flags() const { return kReflection | kSpecular; }
-    glm::vec3 evaluate(const glm::vec3&, const glm::vec3&, TransportMode = TransportMode::Radiance) const {
-        return glm::vec3(0.0f);
-    }
-    float pdf(const glm::vec3&, const glm::vec3&, DiffuseWarp) const { return 0.0f; }
     // The mirror direction, weighted by F(cos theta_o); reads no numbers.
     std::optional<BsdfSample> sample(const glm::vec3& wo, const BsdfNumbers& numbers,
                                      TransportMode = TransportMode::Radiance) const;

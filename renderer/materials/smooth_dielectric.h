@@ -14,19 +14,16 @@
 #include <glm/vec3.hpp>
 
 #include "materials/bsdf_sample.h"
+#include "materials/delta_lobes.h"
 
 namespace strata {
 
-class SmoothDielectric {
+class SmoothDielectric : public DeltaLobes {
 public:
     SmoothDielectric(float eta, const glm::vec3& transmittance);
 
     bool isBlack() const { return false; }
     BsdfFlags flags() const { return kReflection | kTransmission | kSpecular; }
-    glm::vec3 evaluate(const glm::vec3&, const glm::vec3&, TransportMode = TransportMode::Radiance) const {
-        return glm::vec3(0.0f);
-    }
-    float pdf(const glm::vec3&, const glm::vec3&, DiffuseWarp) const { return 0.0f; }
     // Reflection with probability F(cos theta_o), refraction otherwise, chosen by
     // numbers.lobeChoice: the weight is then 1 for reflection and sqrt(Tf) / eta'^2 (radiance) or
     // sqrt(Tf) (importance) for refraction, eta' being the index crossed into over the one left.

@@ -9,19 +9,16 @@
 #include <glm/vec3.hpp>
 
 #include "materials/bsdf_sample.h"
+#include "materials/delta_lobes.h"
 
 namespace strata {
 
-class ThinDielectric {
+class ThinDielectric : public DeltaLobes {
 public:
     ThinDielectric(float eta, const glm::vec3& transmittance) : eta_(eta), transmittance_(transmittance) {}
 
     bool isBlack() const { return false; }
     BsdfFlags flags() const { return kReflection | kTransmission | kSpecular; }
-    glm::vec3 evaluate(const glm::vec3&, const glm::vec3&, TransportMode = TransportMode::Radiance) const {
-        return glm::vec3(0.0f);
-    }
-    float pdf(const glm::vec3&, const glm::vec3&, DiffuseWarp) const { return 0.0f; }
     // Reflection with probability R (above), transmission with 1 - R, by numbers.lobeChoice.
     std::optional<BsdfSample> sample(const glm::vec3& wo, const BsdfNumbers& numbers,
                                      TransportMode = TransportMode::Radiance) const;
