@@ -40,10 +40,13 @@ size_t utf8Length(std::string_view text, size_t i) {
     return length;
 }
 
-// The data: URI that starts at `text[i]`: its header up to the comma, then its size.
+// The data: URI that starts at `text[i]`: its header up to the comma, then its size; the index
+// after it, or `i` itself (nothing appended) when nothing follows the "data:", which is then a
+// word of a message ("Corrupt JPEG data: premature end") rather than a URI.
 size_t appendDataUri(std::string_view text, size_t i, std::string& out) {
     size_t end = i;
     while (end < text.size() && text[end] != ' ' && text[end] != '\'' && text[end] != '"') ++end;
+    if (end - i == 5) return i;
     const std::string_view uri = text.substr(i, end - i);
     const size_t comma = uri.find(',');
     // The media type and encoding, when short: "data:image/png;base64,".
@@ -62,8 +65,10 @@ std::string printable(std::string_view text, size_t longest) {
         const auto c = static_cast<unsigned char>(text[i]);
         const bool wordStart = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
         if (wordStart && text.compare(i, 5, "data:") == 0) {
-            i = appendDataUri(text, i, out);
-            continue;
+            if (const size_t end = appendDataUri(text, i, out); end > i) {
+                i = end;
+                continue;
+            }
         }
         if (c >= 0x20 && c < 0x7F) {
             out += static_cast<char>(c);

@@ -31,6 +31,7 @@ TEST_CASE("printable: a data: URI shows its header and size, a long text its fir
     CHECK(printable("Failed to decode 'uri' : " + uri + " in Buffer", SIZE_MAX) ==
           "Failed to decode 'uri' : data:application/octet-stream;base64,... (100037 bytes) in Buffer");
     CHECK(printable("data:" + std::string(300, 'x')) == "data:... (305 bytes)");
+    CHECK(printable("Corrupt JPEG data: premature end") == "Corrupt JPEG data: premature end");
     // Not a URI's start: inside a word.
     CHECK(printable("metadata:x") == "metadata:x");
     CHECK(printable(std::string(250, 'n')) == std::string(200, 'n') + "... (250 bytes)");
