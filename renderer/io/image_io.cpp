@@ -197,23 +197,20 @@ Image readExr(std::string_view bytes, const std::string& name) {
             }
         }
         image.pixels.resize(static_cast<size_t>(image.width) * image.height);
+        // OpenEXR addresses the buffer by absolute pixel coordinates; Slice::Make shifts the base
+        // by the data window's origin in integer arithmetic (a shifted pointer would leave the
+        // array, which C++ does not allow even before it is dereferenced).
+        const auto* pixels = reinterpret_cast<const char*>(image.pixels.data());
         const size_t xStride = sizeof(glm::vec3);
         const size_t yStride = xStride * image.width;
-        // OpenEXR addresses the buffer by absolute pixel coordinates: shift the base by the
-        // data window's origin.
-        char* base = reinterpret_cast<char*>(image.pixels.data()) -
-                     static_cast<ptrdiff_t>(window.min.x) * xStride -
-                     static_cast<ptrdiff_t>(window.min.y) * yStride;
         Imf::FrameBuffer frame;
-        frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
-        frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
-        frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+        frame.insert("R", Imf::Slice::Make(Imf::FLOAT, pixels, window, xStride, yStride));
+        frame.insert("G", Imf::Slice::Make(Imf::FLOAT, pixels + sizeof(float), window, xStride, yStride));
+        frame.insert("B", Imf::Slice::Make(Imf::FLOAT, pixels + 2 * sizeof(float), window, xStride, yStride));
         if (in.header().channels().findChannel("A")) {
             image.alpha.resize(image.pixels.size());
-            char* alpha = reinterpret_cast<char*>(image.alpha.data()) -
-                          static_cast<ptrdiff_t>(window.min.x) * sizeof(float) -
-                          static_cast<ptrdiff_t>(window.min.y) * sizeof(float) * image.width;
-            frame.insert("A", Imf::Slice(Imf::FLOAT, alpha, sizeof(float), sizeof(float) * image.width));
+            frame.insert("A", Imf::Slice::Make(Imf::FLOAT, image.alpha.data(), window, sizeof(float),
+                                               sizeof(float) * image.width));
         }
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);

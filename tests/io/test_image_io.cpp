@@ -4,6 +4,11 @@
 #include <set>
 #include <unistd.h>
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+
 #include "film/accumulation_buffer.h"
 #include "util/error.h"
 #include "io/image_io.h"
@@ -29,6 +34,37 @@ TEST_CASE("image io: EXR round trip is exact in float") {
     CHECK(back.pixels == image.pixels);
     // Only the file itself is left: no temporary beside it.
     CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);
+}
+
+TEST_CASE("image io: an EXR whose data window lies anywhere, negative or far out, reads as its pixels") {
+    // OpenEXR addresses pixels by absolute coordinates; a window away from (0, 0) must still land
+    // every pixel in place, with no pointer taken outside the image (the sanitized build checks).
+    const auto dir = test::scratchDir("exr-window");
+    const Image image = gradient();
+    for (const Imath::V2i origin : {Imath::V2i(-7, -1000000000), Imath::V2i(1 << 29, 3)}) {
+        const Imath::Box2i window(origin, origin + Imath::V2i(image.width - 1, image.height - 1));
+        Imf::Header header(window, window);
+        for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+        {
+            std::vector<float> planes[3];
+            for (const glm::vec3& pixel : image.pixels) {
+                for (int c = 0; c < 3; ++c) planes[c].push_back(pixel[c]);
+            }
+            Imf::FrameBuffer frame;
+            const char* names[3] = {"R", "G", "B"};
+            for (int c = 0; c < 3; ++c) {
+                frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, planes[c].data(), window, sizeof(float),
+                                                        sizeof(float) * image.width));
+            }
+            Imf::OutputFile out((dir / "window.exr").c_str(), header);
+            out.setFrameBuffer(frame);
+            out.writePixels(image.height);
+        }
+        const Image back = readExr(dir / "window.exr");
+        CHECK(back.width == image.width);
+        CHECK(back.height == image.height);
+        CHECK(back.pixels == image.pixels);
+    }
 }
 
 TEST_CASE("image io: an image's alpha goes to the EXR's A channel and back, a render's is its coverage") {
