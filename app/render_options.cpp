@@ -177,7 +177,7 @@ namespace {
 // The environment `options` give, its map decoded from `files` within the scene's texture
 // `budget`; a note on the map to `warnings`.
 Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
-                               const SceneBudget& budget, std::vector<std::string>& warnings) {
+                               SceneBudget& budget, std::vector<std::string>& warnings) {
     if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
     if (!options.envColor.empty()) {
@@ -193,8 +193,10 @@ Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& 
     } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
         const SceneFile& map = *files.environmentMap;
-        // Checked against the whole budget: the scene's textures are decoded after it.
-        const EnvironmentMapFile file = readEnvironmentMap(map.bytes, map.name, TextureBudget(budget.textureBytes));
+        // Decoded first: the scene's textures then share what the map leaves of the budget.
+        const EnvironmentMapFile file =
+            readEnvironmentMap(map.bytes, map.name, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
+        budget.textureBytesSpent += file.bytes;
         if (file.zeroedNegatives > 0) {
             warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
                                " slightly negative texel components (lossy compression) read as 0");
@@ -216,7 +218,7 @@ SceneBudget RenderOptions::sceneBudget() const {
 }
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
-    const SceneBudget budget = sceneBudget();
+    SceneBudget budget = sceneBudget();
     std::vector<std::string> warnings;
     const Environment given = optionsEnvironment(*this, files, budget, warnings);
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,

@@ -89,8 +89,11 @@ EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path, Texture
 }
 
 EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name, TextureBudget budget) {
-    budget.reserve(readExrHeader(bytes, name), name + ": the environment map");
-    return checkedMap(readExr(bytes, name), name);
+    const TextureSize size = readExrHeader(bytes, name);
+    budget.reserve(size, name + ": the environment map");
+    EnvironmentMapFile file = checkedMap(readExr(bytes, name), name);
+    file.bytes = size.bytes();
+    return file;
 }
 
 }  // namespace strata

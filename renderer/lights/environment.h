@@ -49,6 +49,7 @@ inline constexpr float kNegativeNoise = 0.05f;
 struct EnvironmentMapFile {
     std::shared_ptr<const EnvironmentMap> map;
     size_t zeroedNegatives = 0;
+    uint64_t bytes = 0;  // its decoded texels, as the texture budget counts them
 };
 // Reads a latitude-longitude environment map: an EXR twice as wide as high whose texels are
 // finite and >= 0, lossy-compression noise read as 0. Throws strata::Error naming the file for

@@ -297,13 +297,13 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const 
     GltfModel gltf{model, path, images, {}};
     warnUnreadExtensions(gltf);
     std::vector<std::string> textureWarnings;
-    SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes));
+    SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
     size_t dropped = 0;
     ParsedScene parsed = buildGltfScene(gltf, textures, budget, dropped);
     if (report) {
         report->faces = parsed.mesh.triangles.size();
         report->droppedTriangles = dropped;
-        report->textureBytes = textures.budget().used();
+        report->textureBytes = textures.budget().used() - budget.textureBytesSpent;
         report->warnings.insert(report->warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
         report->warnings.insert(report->warnings.end(), textureWarnings.begin(), textureWarnings.end());
     }

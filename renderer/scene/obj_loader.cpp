@@ -534,7 +534,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     for (size_t v : scan.nonFiniteVertices) {
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
-    SceneTextures textures(bundle, warnings, TextureBudget(budget.textureBytes));
+    SceneTextures textures(bundle, warnings, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
         if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
@@ -641,7 +641,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         report->faces = mesh.triangles.size();
         report->droppedTriangles = dropped;
         report->nonFiniteVertices = scan.nonFiniteVertices.size();
-        report->textureBytes = textures.budget().used();
+        report->textureBytes = textures.budget().used() - budget.textureBytesSpent;
         report->warnings = std::move(warnings);
     }
     return mesh;

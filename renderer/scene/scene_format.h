@@ -44,6 +44,8 @@ struct LoadReport {
 struct SceneBudget {
     uint64_t triangles = 50'000'000;                // --max-triangles
     uint64_t textureBytes = kDefaultTextureBudget;  // --texture-budget
+    // Texels decoded before the scene's own files (an --env map), which share the budget with them.
+    uint64_t textureBytesSpent = 0;
 };
 inline constexpr uint64_t kTrianglesPerInstance = 3;
 

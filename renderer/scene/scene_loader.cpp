@@ -29,7 +29,7 @@ Environment describedEnvironment(const SceneDescription& description, const Scen
     const SceneFile* file = bundle.find(description.environmentFile);
     if (!file) throw Error(name + ": no such EXR file (the scene description's \"environment\")");
     const EnvironmentMapFile map =
-        readEnvironmentMap(file->bytes, name, TextureBudget(budget.textureBytes, report.textureBytes));
+        readEnvironmentMap(file->bytes, name, TextureBudget(budget.textureBytes, budget.textureBytesSpent + report.textureBytes));
     if (map.zeroedNegatives > 0) {
         report.warnings.push_back(name + ": " + std::to_string(map.zeroedNegatives) +
                                   " slightly negative texel components (lossy compression) read as 0");

@@ -54,6 +54,12 @@ std::string gltfPlacedThrice() {
     return gltf.replace(gltf.find(nodes), nodes.size(), R"("nodes":[{"children":[1,2,3]},{"mesh":0},{"mesh":0},{"mesh":0}])");
 }
 
+// An 8 x 4 environment map's EXR file: 384 bytes of texels.
+std::string skyExr() {
+    const auto dir = test::scratchDir("bad-input-sky");
+    writeImage(dir / "sky.exr", Image{8, 4, std::vector<glm::vec3>(32, glm::vec3(0.5f))});
+    return test::fileBytes(dir / "sky.exr");
+}
 struct BadInputCase {
     const char* what;       // the case, as docs/reliability.md describes it
     std::map<std::string, std::string> files;  // written into the case's folder (s.obj etc.)
@@ -254,6 +260,12 @@ const std::vector<BadInputCase> kCliCases = {
      "render {dir}/s.obj --texture-budget 0.00001",
      "s.mtl:4: map_Kd: texture 't.png' is 64 x 64, 3 channels of 8 bits (12.0 KiB); with it the scene's textures "
      "would take 12.0 KiB, over the --texture-budget of 10.5 KiB"},
+    {"--env map and textures together over --texture-budget",
+     {{"s.mtl", kMtl + "map_Kd t.png\n"}, {"t.png", test::pngFile(64, 64, 8, 2, std::string(64 * (1 + 64 * 3), '\0'))},
+      {"sky.exr", skyExr()}},
+     "render {dir}/s.obj --env {dir}/sky.exr --texture-budget 0.0000116",
+     "s.mtl:4: map_Kd: texture 't.png' is 64 x 64, 3 channels of 8 bits (12.0 KiB); with it the scene's textures "
+     "would take 12.4 KiB, over the --texture-budget of 12.2 KiB"},
     {"render --texture-budget 0", {}, "render {dir}/s.obj --texture-budget 0",
      "--texture-budget: must be a positive number of GiB", kBadUsage},
     {"unknown subcommand", {}, "paint", "unknown command 'paint' (see strata --help)", kBadUsage},

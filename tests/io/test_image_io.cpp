@@ -41,7 +41,7 @@ TEST_CASE("image io: an EXR whose data window lies anywhere, negative or far out
     // every pixel in place, with no pointer taken outside the image (the sanitized build checks).
     const auto dir = test::scratchDir("exr-window");
     const Image image = gradient();
-    for (const Imath::V2i origin : {Imath::V2i(-7, -1000000000), Imath::V2i(1 << 29, 3)}) {
+    for (const Imath::V2i& origin : {Imath::V2i(-7, -1000000000), Imath::V2i(1 << 29, 3)}) {
         const Imath::Box2i window(origin, origin + Imath::V2i(image.width - 1, image.height - 1));
         Imf::Header header(window, window);
         for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));

@@ -212,6 +212,12 @@ TEST_CASE("scene loader: the description's environment map counts with the textu
                          Error);
     CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 191}),
                          doctest::Contains("s.mtl:3: map_Kd: texture 't.png' is 8 x 8, 3 channels of 8 bits"), Error);
+    // Texels decoded before the scene's files (an --env map) take their share first.
+    const SceneBudget shared{.textureBytes = 192 + 384 + 10, .textureBytesSpent = 10};
+    CHECK(parseScene(bundle, Traversal::Automatic, shared).report.textureBytes == 192);
+    CHECK_THROWS_WITH_AS(parseScene(bundle, Traversal::Automatic, SceneBudget{.textureBytes = 586, .textureBytesSpent = 11}),
+                         doctest::Contains("the scene's textures would take 587 bytes, over the --texture-budget of 586 bytes"),
+                         Error);
 }
 
 TEST_CASE("scene loader: a description's environment file that is missing or not a map is named") {

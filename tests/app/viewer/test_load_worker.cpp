@@ -47,7 +47,7 @@ struct StageLog {
 };
 
 LoadRequest sceneRequest(const std::filesystem::path& path) {
-    return {LoadRequest::Kind::Scene, path, Traversal::Automatic};
+    return {LoadRequest::Kind::Scene, path, Traversal::Automatic, SceneBudget{}, SceneReadOptions{}};
 }
 
 const std::filesystem::path kCornell = test::sourceDir() / "assets/cornell/cornell.obj";
@@ -121,12 +121,12 @@ TEST_CASE("load worker threads: a failing load is its one line; a map loads as a
     CHECK(missing.error == (dir / "missing.obj").string() + ": no such scene file");
 
     writeImage(dir / "sky.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(0.5f))});
-    loader.start({LoadRequest::Kind::EnvironmentMap, dir / "sky.exr", Traversal::Automatic});
+    loader.start({LoadRequest::Kind::EnvironmentMap, dir / "sky.exr", Traversal::Automatic, SceneBudget{}, SceneReadOptions{}});
     const LoadOutcome map = outcomeOf(loader);
     REQUIRE(map.map);
     CHECK(map.map->map->image().width == 4);
     writeImage(dir / "square.exr", Image{2, 2, std::vector<glm::vec3>(4, glm::vec3(1.0f))});
-    loader.start({LoadRequest::Kind::EnvironmentMap, dir / "square.exr", Traversal::Automatic});
+    loader.start({LoadRequest::Kind::EnvironmentMap, dir / "square.exr", Traversal::Automatic, SceneBudget{}, SceneReadOptions{}});
     const LoadOutcome square = outcomeOf(loader);
     CHECK(!square.map);
     const std::string notLatLong =
