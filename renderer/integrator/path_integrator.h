@@ -109,10 +109,12 @@ private:
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
     // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
-    // (lightNumbers): its shadow ray and the reflected radiance it brings, MIS-weighted against
-    // the direction sampler; nullopt when it brings nothing whatever the shadow ray finds.
-    std::optional<ShadowRay> lightSample(const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame,
-                                         const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u) const;
+    // (lightNumbers): sets `shadow` to its shadow ray and the reflected radiance it brings to a
+    // path of throughput `weight`, MIS-weighted against the direction sampler; leaves it empty
+    // when the sample brings nothing whatever the shadow ray finds.
+    void lightSample(const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame, const glm::vec3& wo,
+                     const Bsdf& bsdf, const glm::vec3& u, const glm::vec3& weight,
+                     std::optional<ShadowRay>& shadow) const;
 
     // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
     // point when the scene has more than one light, the point alone for a single light with

@@ -23,6 +23,7 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     // the triangle found in double and rounded once; plus Embree's rounding.
     const float largest = maxComponent(glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2)));
     pointError_ = gammaBound(5) * (glm::abs(p0) + glm::abs(p1 - p0) + glm::abs(p2 - p0)) + traversalError(largest);
+    normalError_ = 2.0f * glm::dot(glm::abs(normal_), pointError_);
 }
 
 AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,
@@ -72,9 +73,8 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     const double distance = glm::dot(glm::dvec3(normal_), glm::dvec3(point) - glm::dvec3(p0_)) / cosLight;
     // The point, found in double, is rounded once to float.
     const glm::vec3 onLight(glm::dvec3(point) + distance * direction);
-    return LightSample{glm::vec3(direction), static_cast<float>(distance),
-                       radianceAlong(glm::dvec3(point), direction, distance),
-                       static_cast<float>(1.0 / triangle->solidAngle()), true, onLight, pointError_, normal_};
+    return sampleAt(onLight, glm::vec3(direction), static_cast<float>(distance),
+                    radianceAlong(glm::dvec3(point), direction, distance), static_cast<float>(1.0 / triangle->solidAngle()));
 }
 
 std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
@@ -90,8 +90,24 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    return LightSample{direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight), true,
-                       onLight, pointError_, normal_};
+    return sampleAt(onLight, direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight));
+}
+
+// The shortened segment ends off the surface by shortening x distance x cos along the normal.
+// Where that does not clear the sampled point's error, the shadow ray runs to the point offset
+// by that error instead (pbrt-v4's SpawnRayTo between two offset points).
+std::optional<LightSample> AreaLight::sampleAt(const glm::vec3& onLight, const glm::vec3& direction, float distance,
+                                               const glm::vec3& radiance, float pdf) const {
+    // Built in place in the one object returned: a LightSample copied into an optional goes
+    // through the stack in 16-byte words over its fields' narrower stores, a store-to-load
+    // forwarding stall on every light sample.
+    std::optional<LightSample> sample(std::in_place, direction, distance, radiance, pdf, true);
+    const float cosLight = -glm::dot(normal_, direction);
+    if (!(kShadowRayShortening * distance * cosLight > normalError_)) {
+        sample->endsOffSurface = true;
+        sample->offSurfaceEnd = offsetRayOrigin(onLight, pointError_, normal_, -direction);
+    }
+    return sample;
 }
 
 float AreaLight::pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const {

@@ -62,6 +62,10 @@ private:
         if (!textured_) return radiance_;
         return textured_->emissionAt((1.0f - b1 - b2) * uvs_[0] + b1 * uvs_[1] + b2 * uvs_[2]);
     }
+    // A sample of the point `onLight`, at `distance` along `direction`, with its end off the
+    // surface where the shortened shadow ray would not clear the point's error (light.h).
+    std::optional<LightSample> sampleAt(const glm::vec3& onLight, const glm::vec3& direction, float distance,
+                                        const glm::vec3& radiance, float pdf) const;
     // Le where the ray from `point` along `direction` meets the triangle at `distance`.
     glm::vec3 radianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const;
 
@@ -72,6 +76,7 @@ private:
     glm::dvec3 centroid_;
     double radius_;  // of the sphere about the centroid through the farthest vertex
     glm::vec3 pointError_;  // a bound on the rounding error of any sampled point (constructor)
+    float normalError_;     // twice that bound's extent along the normal
     double minSphericalSolidAngle_;
     const Material* textured_ = nullptr;
     std::array<glm::vec2, 3> uvs_{};

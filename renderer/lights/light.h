@@ -13,18 +13,22 @@
 
 namespace strata {
 
+// A shadow ray toward a point on a surface stops this fraction of its length short of it (pbrt-v4's
+// ShadowEpsilon), so that the surface cannot occlude its own point.
+inline constexpr float kShadowRayShortening = 1e-4f;
+
 struct LightSample {
     glm::vec3 direction;  // unit, from the receiving point toward the light
     float distance;       // to the sampled point; infinity for a light at infinity
     glm::vec3 radiance;   // arriving along -direction (for a delta light: intensity / distance^2)
     float pdf;            // solid-angle density of `direction`; 0 for a delta light
     bool onSurface;       // the point lies on scene geometry, which a shadow ray must stop short of
-    // For a point on a surface: the point as computed, the per-axis bound of its rounding error
-    // (geometry/rounding.h) and the surface's unit normal there, so that a shadow ray can end just
-    // short of the surface however far it is from the origin of the coordinates.
-    glm::vec3 point{0.0f};
-    glm::vec3 pointError{0.0f};
-    glm::vec3 normal{0.0f};
+    // For a point on a surface where the shortening does not clear the point's rounding error,
+    // which grows with the distance from the origin of the coordinates (geometry/rounding.h): the
+    // point moved off the surface toward the receiver by that error, for the shadow ray to end
+    // at instead.
+    bool endsOffSurface = false;
+    glm::vec3 offSurfaceEnd{0.0f};
 };
 
 // Where a ray reached a light: for a light on the scene's triangles, the triangle's unit

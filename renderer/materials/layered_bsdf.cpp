@@ -73,9 +73,13 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, const BsdfNum
         const WarpedDirection warped = warpDiffuse(numbers.diffuse);
         const glm::vec3& wi = warped.direction;
         if (!(wi.z > 0.0f)) return std::nullopt;
-        return BsdfSample{wi, diffuseNormalisation_, wi.z / warped.cosOverPdf,
-                          diffuseNormalisation_ * warped.cosOverPdf, kReflection | kDiffuse, 1.0f,
-                          numbers.diffuse.stratum};
+        // Built in place: a BsdfSample made first and then moved into the optional is copied
+        // through the stack in 16-byte words over its fields' narrower stores, a load that
+        // store-to-load forwarding cannot serve (perf annotate put 13% of the bounce loop's time
+        // there, without next-event estimation).
+        return std::optional<BsdfSample>(std::in_place, wi, diffuseNormalisation_, wi.z / warped.cosOverPdf,
+                                         diffuseNormalisation_ * warped.cosOverPdf, kReflection | kDiffuse, 1.0f,
+                                         numbers.diffuse.stratum);
     }
     glm::vec3 wi;
     BsdfFlags lobe = kReflection | kDiffuse;
@@ -93,7 +97,7 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, const BsdfNum
     density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
     if (!(density > 0.0f) || wi.z <= 0.0f) return std::nullopt;
     const glm::vec3 f = evaluate(wo, wi);
-    return BsdfSample{wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum};
+    return std::optional<BsdfSample>(std::in_place, wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum);
 }
 
 float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp warp) const {
