@@ -338,9 +338,13 @@ void PathIntegrator::lightSample(const SurfaceHit& surface, const glm::vec3& ref
         const float lightPdf = choice.probability * sample->pdf;
         scale = cosine * powerHeuristic(lightPdf, bsdf.pdf(wo, wi, warp_)) / lightPdf;
     }
-    // Built in place: a ShadowRay made first and then copied into `shadow` goes through the stack
-    // in 16-byte words over its fields' narrower stores, a store-to-load forwarding stall.
-    shadow.emplace(Ray{origin, direction}, reach, weight * (f * sample->radiance * scale));
+    // Written field by field into `shadow`: a ShadowRay made first and then copied in goes
+    // through the stack in 16-byte words over its fields' narrower stores, a store-to-load
+    // forwarding stall.
+    shadow.emplace();
+    shadow->ray = Ray{origin, direction};
+    shadow->reach = reach;
+    shadow->contribution = weight * (f * sample->radiance * scale);
 }
 
 }  // namespace strata

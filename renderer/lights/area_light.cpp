@@ -98,10 +98,15 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
 // by that error instead (pbrt-v4's SpawnRayTo between two offset points).
 std::optional<LightSample> AreaLight::sampleAt(const glm::vec3& onLight, const glm::vec3& direction, float distance,
                                                const glm::vec3& radiance, float pdf) const {
-    // Built in place in the one object returned: a LightSample copied into an optional goes
-    // through the stack in 16-byte words over its fields' narrower stores, a store-to-load
-    // forwarding stall on every light sample.
-    std::optional<LightSample> sample(std::in_place, direction, distance, radiance, pdf, true);
+    // Written field by field into the one object returned: a LightSample copied into an
+    // optional goes through the stack in 16-byte words over its fields' narrower stores, a
+    // store-to-load forwarding stall on every light sample.
+    std::optional<LightSample> sample(std::in_place);
+    sample->direction = direction;
+    sample->distance = distance;
+    sample->radiance = radiance;
+    sample->pdf = pdf;
+    sample->onSurface = true;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(kShadowRayShortening * distance * cosLight > normalError_)) {
         sample->endsOffSurface = true;
