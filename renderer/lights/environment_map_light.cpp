@@ -13,7 +13,9 @@ EnvironmentMapLight::EnvironmentMapLight(std::shared_ptr<const EnvironmentMap> m
     : map_(std::move(map)),
       cosRotation_(std::cos(rotationDegrees * (kPi / 180.0f))),
       sinRotation_(std::sin(rotationDegrees * (kPi / 180.0f))),
-      power_(glm::vec3(M_PI * static_cast<double>(sceneRadius) * sceneRadius * map_->sphereIntegral())) {}
+      power_(glm::vec3(M_PI * static_cast<double>(sceneRadius) * sceneRadius * map_->sphereIntegral())),
+      sampledPower_(static_cast<float>(M_PI * static_cast<double>(sceneRadius) * sceneRadius *
+                                       map_->sampledIntegral())) {}
 
 glm::vec2 EnvironmentMapLight::imagePoint(const glm::vec3& d) const {
     // Into the map's frame: the inverse rotation about +y.
@@ -31,6 +33,7 @@ const glm::vec3& EnvironmentMapLight::texel(glm::ivec2 cell) const {
 }
 
 std::optional<LightSample> EnvironmentMapLight::sample(const glm::vec3& /*point*/, glm::vec2 u) const {
+    if (!map_->sampled()) return std::nullopt;
     const PiecewiseConstant2D::Sample s = map_->distribution().sample(u);
     const float theta = kPi * s.point.y;
     const float sinTheta = std::sin(theta);
@@ -47,6 +50,7 @@ std::optional<LightSample> EnvironmentMapLight::sample(const glm::vec3& /*point*
 }
 
 float EnvironmentMapLight::pdf(const glm::vec3&, const glm::vec3& direction, const LightHit&) const {
+    if (!map_->sampled()) return 0.0f;
     const glm::vec2 point = imagePoint(direction);
     const float sinTheta = std::sqrt(direction.x * direction.x + direction.z * direction.z);
     if (!(sinTheta > 0.0f)) return 0.0f;

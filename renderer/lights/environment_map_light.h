@@ -9,10 +9,11 @@
 // above: the centre moves from -z toward -x for alpha > 0) rotates the whole frame. Radiance is
 // constant over a texel.
 //
-// Next-event estimation samples the texels in proportion to luminance times sin(theta) (the
-// sphere's area element in these coordinates) with the map's piecewise-constant 2D distribution
-// (environment_map.h), in the map's frame; the solid-angle density of a direction is then
-// p(x, y) / (2 pi^2 sin(theta)), the Jacobian of (x, y) -> direction. The rotation turns the
+// Next-event estimation samples the texels by the map's MIS-compensated piecewise-constant 2D
+// distribution (environment_map.h: the luminance above the mean, times sin(theta), the sphere's
+// area element in these coordinates), in the map's frame; the solid-angle density of a direction
+// is then p(x, y) / (2 pi^2 sin(theta)), the Jacobian of (x, y) -> direction, and 0 where the map
+// is not above its mean. A map of one radiance gives next-event estimation nothing to sample. The rotation turns the
 // sampled directions and unturns the looked-up ones, so the light costs nothing to make.
 #include <memory>
 
@@ -34,6 +35,8 @@ public:
     // pi r^2 times the radiance integrated over the sphere (= 4 pi times its mean), as pbrt-v4
     // counts the power an infinite light sends into the scene.
     glm::vec3 power() const override { return power_; }
+    // pi r^2 times the luminance above the mean integrated over the sphere: what sample() draws.
+    glm::vec3 sampledPower() const override { return sampledPower_; }
 
 private:
     // The point of the image a world direction sees.
@@ -43,6 +46,7 @@ private:
     std::shared_ptr<const EnvironmentMap> map_;
     float cosRotation_, sinRotation_;
     glm::vec3 power_;
+    glm::vec3 sampledPower_;
 };
 
 }  // namespace strata

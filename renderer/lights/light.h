@@ -1,8 +1,9 @@
 #pragma once
 // What next-event estimation and multiple importance sampling need from a light, whatever its
 // kind: a direction sampled toward it with its density, the density of a given direction, the
-// radiance a ray receives from it (a ray that found it, or one that left the scene) and its total
-// power, by which LightSampler (light_sampler.h) chooses among the scene's lights.
+// radiance a ray receives from it (a ray that found it, or one that left the scene), its total
+// power, and the power of what its samples draw, by which LightSampler (light_sampler.h) chooses
+// among the scene's lights.
 //
 // Densities are per unit solid angle at the receiving point and do not include the probability of
 // choosing the light. A delta light (a point light) is reached by sampling only: its pdf is 0 and
@@ -53,6 +54,10 @@ public:
     virtual glm::vec3 emitted(const glm::vec3& direction, const LightHit& hit) const = 0;
     // Total emitted power (W), per colour channel.
     virtual glm::vec3 power() const = 0;
+    // The power of the part of the light that sample() draws. All of it, but for a light at
+    // infinity that leaves the part every direction receives alike to the BSDF's samples (MIS
+    // compensation, environment_map.h); 0 for one that gives sample() nothing to draw.
+    virtual glm::vec3 sampledPower() const { return power(); }
     // Reached only by sampling (no ray can find it). A delta light has one direction toward
     // each point, so its sample() does not read `u`.
     virtual bool isDelta() const { return false; }

@@ -1,8 +1,9 @@
 #pragma once
 // Which light next-event estimation samples at a vertex: light i with probability proportional to
-// its power (the mean of its RGB power, light.h), so that brighter and larger lights get more of
-// the shadow rays. The choice does not depend on the receiving point; every light of positive
-// power can be chosen, so with MIS the estimate stays unbiased whatever the scene.
+// the power its samples draw (the mean of its RGB sampled power, light.h), so that brighter and
+// larger lights get more of the shadow rays. The choice does not depend on the receiving point;
+// every light of positive sampled power can be chosen, and what the others send (a uniform sky)
+// the BSDF's samples reach, so with MIS the estimate stays unbiased whatever the scene.
 #include <cstdint>
 #include <vector>
 

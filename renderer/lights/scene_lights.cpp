@@ -9,8 +9,8 @@
 namespace strata {
 namespace {
 
-double meanPower(const Light& light) {
-    const glm::vec3 p = light.power();
+double meanSampledPower(const Light& light) {
+    const glm::vec3 p = light.sampledPower();
     return (static_cast<double>(p.x) + p.y + p.z) / 3.0;
 }
 
@@ -36,10 +36,10 @@ bool outshineSky(const LightDescriptions& descriptions) {
     return emitting > 0.0 && emitting >= kEmittingShare * descriptions.surfaceArea;
 }
 
-std::vector<double> powersOf(const std::vector<std::unique_ptr<Light>>& lights) {
+std::vector<double> sampledPowersOf(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<double> powers;
     powers.reserve(lights.size());
-    for (const auto& light : lights) powers.push_back(meanPower(*light));
+    for (const auto& light : lights) powers.push_back(meanSampledPower(*light));
     return powers;
 }
 
@@ -73,7 +73,7 @@ void SceneLights::setEnvironment(const Environment& given) {
     maxRadianceAtInfinity_ = maxRadiance(environment_);
     litByDefault_ = given.kind == Environment::Kind::Default && environment_.kind != Environment::Kind::None;
     if (auto light = makeEnvironmentLight(environment_, sceneRadius_)) atInfinity_.push_back(add(std::move(light)));
-    sampler_ = LightSampler(powersOf(lights_));
+    sampler_ = LightSampler(sampledPowersOf(lights_));
 }
 
 std::string_view SceneLights::defaultSkyReason() const {

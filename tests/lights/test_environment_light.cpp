@@ -1,8 +1,9 @@
 // The environment lights (uniform_environment_light.h, environment_map_light.h): sample() gives
 // the density pdf() reports (a chi-square over the map's texels, with expected counts integrated
-// from pdf() itself, and E[1/pdf] = 4 pi), the radiance emitted() reports, the documented
-// direction convention and rotation, and the power pi r^2 * integral of L over the sphere; and
-// readEnvironmentMap's checks.
+// from pdf() itself, and E[1/pdf] = the solid angle it covers), MIS-compensated (environment_map.h:
+// only what rises above the mean is sampled, a uniform sky not at all), the radiance emitted()
+// reports, the documented direction convention and rotation, and the power pi r^2 * integral of L
+// over the sphere; and readEnvironmentMap's checks.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "sampling/random.h"
 #include "util/constants.h"
 #include "util/error.h"
+#include "util/luminance.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -52,33 +54,20 @@ int texelIndex(const glm::vec3& radiance) { return static_cast<int>(radiance.x) 
 
 }  // namespace
 
-TEST_CASE("uniform environment: uniform over the sphere, pdf 1/(4 pi), power pi r^2 4 pi L") {
+TEST_CASE("uniform environment: never sampled (nothing above its mean), power pi r^2 4 pi L") {
     const UniformEnvironmentLight light(glm::vec3(1.0f, 2.0f, 3.0f), 2.0f);
-    constexpr int kSamples = 40000;
-    double sumZ = 0.0, sumZ2 = 0.0;
-    for (int k = 0; k < kSamples; ++k) {
-        const auto s = light.sample(glm::vec3(0.0f), randomPoint(k));
-        REQUIRE(s);
-        CHECK(glm::length(s->direction) == doctest::Approx(1.0f).epsilon(1e-6));
-        CHECK(std::isinf(s->distance));
-        CHECK_FALSE(s->onSurface);
-        CHECK(s->pdf == light.pdf(glm::vec3(0.0f), s->direction, kMiss));
-        sumZ += s->direction.z;
-        sumZ2 += s->direction.z * s->direction.z;
-    }
-    // Uniform on the sphere: z uniform on [-1, 1], mean 0 (variance 1/3), E[z^2] = 1/3
-    // (variance 4/45).
-    CHECK(std::abs(sumZ / kSamples) < 4.0 * std::sqrt(1.0 / 3.0 / kSamples));
-    CHECK(std::abs(sumZ2 / kSamples - 1.0 / 3.0) < 4.0 * std::sqrt(4.0 / 45.0 / kSamples));
-    CHECK(light.pdf({}, {0, 1, 0}, kMiss) == doctest::Approx(1.0f / (4.0f * kPi)));
+    for (uint64_t k = 0; k < 16; ++k) CHECK_FALSE(light.sample(glm::vec3(0.0f), randomPoint(k)).has_value());
+    CHECK(light.pdf({}, {0, 1, 0}, kMiss) == 0.0f);
     CHECK(light.emitted({0, -1, 0}, kMiss) == glm::vec3(1.0f, 2.0f, 3.0f));
     CHECK(light.power().z == doctest::Approx(kPi * 4.0f * 4.0f * kPi * 3.0f));
+    CHECK(light.sampledPower() == glm::vec3(0.0f));
     CHECK_FALSE(light.isDelta());
 }
 
 TEST_CASE("environment map: sample() has the density pdf() gives and the radiance emitted() gives") {
     const double rotation = 30.0;
-    const EnvironmentMapLight light(std::make_shared<const EnvironmentMap>(labelledMap(), "labelled"), rotation, 1.0f);
+    const auto map = std::make_shared<const EnvironmentMap>(labelledMap(), "labelled");
+    const EnvironmentMapLight light(map, rotation, 1.0f);
     // Expected counts: pdf() integrated over each texel by the midpoint rule in (theta, phi),
     // d(omega) = sin(theta) d(theta) d(phi).
     constexpr int kSub = 8;
@@ -102,6 +91,27 @@ TEST_CASE("environment map: sample() has the density pdf() gives and the radianc
         }
     }
     CHECK(total == doctest::Approx(1.0).epsilon(1e-4));
+    // Compensation: the texels at or below the mean luminance have no density, those above it
+    // density in proportion to their excess (texel 43 is the bright spot).
+    const double mean = luminance(map->sphereIntegral()) / (4.0 * M_PI);
+    double sampledSolidAngle = 0.0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const double excess = luminance(glm::dvec3(map->image().pixels[y * kWidth + x])) - mean;
+            CAPTURE(y * kWidth + x);
+            if (excess > 0.0) {
+                sampledSolidAngle += 2.0 * M_PI / kWidth *
+                                     (std::cos(M_PI * y / kHeight) - std::cos(M_PI * (y + 1) / kHeight));
+            }
+            CHECK((expected[y * kWidth + x] > 0.0) == (excess > 0.0));
+        }
+    }
+    CHECK(expected[43] > 0.0);
+    CHECK(expected[42] == 0.0);
+    // Texels with excesses 1 and 2 (red 1 apart is 0.2126 apart in luminance) in one row.
+    const int first = kWidth * kHeight - 2;
+    const double excess0 = luminance(glm::dvec3(map->image().pixels[first])) - mean;
+    CHECK(expected[first + 1] / expected[first] == doctest::Approx((excess0 + 0.2126) / excess0).epsilon(1e-3));
 
     std::vector<double> counts(kWidth * kHeight, 0.0);
     double inverseDensity = 0.0;
@@ -119,16 +129,57 @@ TEST_CASE("environment map: sample() has the density pdf() gives and the radianc
     }
     CHECK(pdfMismatches == 0);
     double chiSquare = 0.0;
+    size_t sampledTexels = 0;
     for (size_t i = 0; i < counts.size(); ++i) {
         const double e = kSamples * expected[i];
+        if (e == 0.0) {
+            CHECK(counts[i] == 0.0);
+            continue;
+        }
         chiSquare += (counts[i] - e) * (counts[i] - e) / e;
+        ++sampledTexels;
     }
-    CHECK(chiSquare < test::chiSquareCritical(counts.size() - 1));
-    // Every texel has weight, so E[1/pdf] is the whole sphere's solid angle (to the accuracy of
-    // the samples' spread: 1/pdf varies about 10^3-fold here, hence the loose bound).
-    CHECK(inverseDensity / kSamples == doctest::Approx(4.0 * M_PI).epsilon(0.05));
-    // The bright texel is sampled far more often than its neighbour.
-    CHECK(counts[2 * kWidth + 11] > 20.0 * counts[2 * kWidth + 10]);
+    CHECK(chiSquare < test::chiSquareCritical(sampledTexels - 1));
+    // E[1/pdf] is the solid angle of the texels with density (to the accuracy of the samples'
+    // spread: 1/pdf varies about 10^3-fold here, hence the loose bound).
+    CHECK(inverseDensity / kSamples == doctest::Approx(sampledSolidAngle).epsilon(0.05));
+    CHECK(counts[43] > 0.0);
+}
+
+TEST_CASE("environment map: MIS compensation samples a two-level sky's bright half uniformly, a flat one not at all") {
+    // Radiance 3 over the upper hemisphere, 1 below: the mean is 2, so the light samples the upper
+    // half alone (with the excess 1 everywhere on it: uniformly over the map's rows of texels,
+    // weighed by their sin(theta)) and draws pi r^2 * 1 * 2 pi of power.
+    Image twoLevel{16, 8, std::vector<glm::vec3>(128, glm::vec3(1.0f))};
+    for (int i = 0; i < 64; ++i) twoLevel.pixels[i] = glm::vec3(3.0f);
+    const EnvironmentMapLight sky(std::make_shared<const EnvironmentMap>(twoLevel, "two-level"), 0.0f, 2.0f);
+    CHECK(sky.sampledPower().x == doctest::Approx(M_PI * 4.0 * 2.0 * M_PI).epsilon(1e-4));
+    CHECK(sky.power().x == doctest::Approx(M_PI * 4.0 * (3.0 + 1.0) * 2.0 * M_PI).epsilon(1e-4));
+    // E[1/pdf] is the upper hemisphere's solid angle, 2 pi, and E[cos / pdf] its projected one, pi.
+    constexpr int kSamples = 20000;
+    std::vector<double> inverse, projected;
+    for (uint64_t k = 0; k < kSamples; ++k) {
+        const auto s = sky.sample(glm::vec3(0.0f), randomPoint(k));
+        REQUIRE(s);
+        REQUIRE(s->direction.y > 0.0f);
+        CHECK(s->radiance == glm::vec3(3.0f));
+        CHECK(sky.pdf({}, s->direction, kMiss) == doctest::Approx(s->pdf).epsilon(1e-3));
+        inverse.push_back(1.0 / s->pdf);
+        projected.push_back(s->direction.y / s->pdf);
+    }
+    const auto solidAngle = test::estimateMean(inverse);
+    const auto projectedSolidAngle = test::estimateMean(projected);
+    CHECK(std::abs(solidAngle.mean - 2.0 * M_PI) < 4.0 * solidAngle.standardError);
+    CHECK(std::abs(projectedSolidAngle.mean - M_PI) < 4.0 * projectedSolidAngle.standardError);
+    CHECK(sky.pdf({}, glm::normalize(glm::vec3(0.3f, -0.5f, 0.1f)), kMiss) == 0.0f);
+
+    const Image uniform{8, 4, std::vector<glm::vec3>(32, glm::vec3(2.0f))};
+    const auto flatMap = std::make_shared<const EnvironmentMap>(uniform, "flat");
+    CHECK_FALSE(flatMap->sampled());
+    const EnvironmentMapLight flat(flatMap, 0.0f, 3.0f);
+    CHECK_FALSE(flat.sample(glm::vec3(0.0f), randomPoint(1)).has_value());
+    CHECK(flat.pdf({}, {0, 1, 0}, kMiss) == 0.0f);
+    CHECK(flat.sampledPower() == glm::vec3(0.0f));
 }
 
 TEST_CASE("environment map: image centre along -z, top row up, rotation right-handed about +y") {

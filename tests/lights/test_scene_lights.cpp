@@ -1,6 +1,6 @@
 // A scene's lights (scene_lights.h), from the light descriptions a scene hands them: emitting
 // triangles become area lights found by their triangle, point lights are added after them, and
-// the choice among all of them is by power; and the default sky's rule for a scene given no
+// the choice among all of them is by the power their samples draw; and the default sky's rule for a scene given no
 // environment.
 #include <cmath>
 #include <doctest/doctest.h>
@@ -97,16 +97,37 @@ Material lampOf(float radiance) {
 }
 }  // namespace
 
-TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by power") {
+// A sky of radiance `upper` over the upper hemisphere and black below: its mean is upper / 2, so
+// its light samples the upper half, where the excess is upper / 2 (environment_map.h).
+Environment twoLevelSky(float upper) {
+    Image image{8, 4, std::vector<glm::vec3>(32, glm::vec3(0.0f))};
+    for (int i = 0; i < 16; ++i) image.pixels[i] = glm::vec3(upper);
+    Environment sky;
+    sky.kind = Environment::Kind::Map;
+    sky.map = std::make_shared<const EnvironmentMap>(std::move(image), "two-level");
+    return sky;
+}
+
+TEST_CASE("scene lights: an environment comes after the triangles' lights and is chosen by the power it samples") {
     const Material lamp = lampOf(2.0f);
     LightDescriptions descriptions = unitLampQuad(lamp);
-    descriptions.environment.kind = Environment::Kind::Uniform;
-    descriptions.environment.radiance = glm::vec3(1.0f / kPi);  // power pi (1/2) 4 pi / pi = 2 pi
+    // Sampled power pi r^2 * (upper / 2) * 2 pi = pi (1/2) (2 / pi) 2 pi = 2 pi, the lamp's.
+    descriptions.environment = twoLevelSky(4.0f / kPi);
     const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 3);
     CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
     CHECK_FALSE(lights.litByDefault());
     CHECK(lights.sampler().probability(2) == doctest::Approx(0.5f));
+    // A uniform sky gives its light samples nothing to draw: the lamp takes them all.
+    descriptions.environment.kind = Environment::Kind::Uniform;
+    descriptions.environment.radiance = glm::vec3(1.0f / kPi);
+    const SceneLights uniform(descriptions);
+    REQUIRE(uniform.size() == 3);
+    CHECK(uniform.sampler().probability(2) == 0.0f);
+    CHECK(uniform.sampler().probability(0) == doctest::Approx(0.5f));
+    // Alone, it leaves next-event estimation nothing to sample.
+    descriptions.emitters.clear();
+    CHECK(SceneLights(descriptions).sampler().empty());
 }
 
 TEST_CASE("scene lights: a new environment replaces the old one's light alone and re-weighs the choice") {
@@ -117,18 +138,16 @@ TEST_CASE("scene lights: a new environment replaces the old one's light alone an
     CHECK(lights.lightsAtInfinity().empty());
     CHECK(lights.environment().kind == Environment::Kind::None);
 
-    Environment sky;
-    sky.kind = Environment::Kind::Uniform;
-    sky.radiance = glm::vec3(3.0f / kPi);  // power pi (1/2) 4 pi (3 / pi) = 6 pi: 3/4 of the total
+    Environment sky = twoLevelSky(12.0f / kPi);  // sampled power pi (1/2) (6 / pi) 2 pi = 6 pi: 3/4
     lights.setEnvironment(sky);
     REQUIRE(lights.size() == 3);
     CHECK(&lights.light(0) == triangleLight);  // the triangles' lights are not rebuilt
     CHECK(lights.lightOnTriangle(0) == 0);
     CHECK(lights.lightsAtInfinity() == std::vector<uint32_t>{2});
-    CHECK(lights.maxRadianceAtInfinity() == doctest::Approx(3.0f / kPi));
+    CHECK(lights.maxRadianceAtInfinity() == doctest::Approx(12.0f / kPi));
     CHECK(lights.sampler().probability(0) == doctest::Approx(0.125f));
     CHECK(lights.sampler().probability(2) == doctest::Approx(0.75f));
-    CHECK(lights.environment().kind == Environment::Kind::Uniform);
+    CHECK(lights.environment().kind == Environment::Kind::Map);
 
     sky.kind = Environment::Kind::None;
     lights.setEnvironment(sky);
