@@ -11,6 +11,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "bench/process_memory.h"
 #include "util/error.h"
 #include "io/auto_exposure.h"
 #include "io/image_io.h"
@@ -197,6 +198,7 @@ void RenderCommand::run() const {
             {"outputs", outputs},
             {"tonemap", tonemap},
             {"exposure", pngExposure},
+            {"peak_rss_mib", peakResidentKiB() / 1024.0},  // this process's own (process_memory.h)
         };
         std::printf("%s\n", report.dump().c_str());
     } else if (buffer.droppedSamples() > 0) {

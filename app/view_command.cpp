@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "bench/process_memory.h"
 #include "io/auto_exposure.h"
 #include "util/error.h"
 #include "render_options.h"
@@ -145,6 +146,7 @@ void ViewCommand::run() const {
         {"msamples_per_wall_second", last ? last->totalPaths / report.wallSeconds * 1e-6 : 0.0},
         {"error_against_reference", last && last->againstReference},
         {"sides", sides},
+        {"peak_rss_mib", peakResidentKiB() / 1024.0},  // this process's own (process_memory.h)
     };
     std::printf("%s\n", out.dump().c_str());
 }

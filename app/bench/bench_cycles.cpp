@@ -164,7 +164,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         };
         cycles.push_back({spp, job.out, seconds,
                           {"blender (Cycles, " + std::to_string(spp) + " spp)",
-                           cyclesCommandLine(script, parameters), readSeconds, {}, {}, {}}});
+                           cyclesCommandLine(script, parameters), readSeconds, {}, {}}});
     }
 
     // The defaults; each of their levers turned off alone (what it gains is its row against the
@@ -197,7 +197,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         const auto image = out / ("vs-cycles-strata-" + std::to_string(config) + "-" + std::to_string(spp) + ".exr");
         return StrataRun{config, cycles, spp, match, image,
                          {configs[config].label + ", " + std::to_string(spp) + " spp",
-                          renderCommandLine(configs[config].options, spp, image), {}, {}, {}, {}}};
+                          renderCommandLine(configs[config].options, spp, image), {}, {}, {}}};
     };
     // Races the Cycles renders with `strata`, alternated; the Cycles times pool over races.
     const auto raceWithCycles = [&](std::vector<StrataRun>& runs, const std::string& label) {

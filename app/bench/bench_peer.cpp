@@ -91,7 +91,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         options.width = settings.width;
         options.height = settings.height;
         options.threads = threads;
-        entrants.push_back({run.label, renderCommandLine(options, settings.spp, run.image), {}, {}, {}, {}});
+        entrants.push_back({run.label, renderCommandLine(options, settings.spp, run.image), {}, {}, {}});
     }
     const CameraPose& pose = scene.settings.pose;
     std::vector<std::string> embreeArgs = {
@@ -111,7 +111,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
                            number(light.intensity.y), number(light.intensity.z)});
     }
 
-    entrants.push_back({kEmbreePathTracer, embreeArgs, {}, {}, {}, {}});
+    entrants.push_back({kEmbreePathTracer, embreeArgs, {}, {}, {}});
     if (const auto failed = race(entrants, settings.repeats, log, "vs-embree")) {
         return "\n### Against Embree's tutorial path tracer\n\nSkipped: `" + *failed + "` failed (see " +
                log.string() + "; Debian package embree-tools).\n";

@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <string_view>
 #include <unistd.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <nlohmann/json.hpp>
 
 #include "io/output_file.h"
 
@@ -42,7 +44,16 @@ ProcessTiming runTimed(std::vector<std::string> args, const std::filesystem::pat
     logFile.commit();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     const auto toSeconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime), usage.ru_maxrss};
+    return {seconds, toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime)};
+}
+
+nlohmann::json lastJsonReport(const std::filesystem::path& log) {
+    std::ifstream in(log);
+    std::string report;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.front() == '{') report = line;
+    }
+    return nlohmann::json::parse(report, nullptr, false);
 }
 
 bool onPath(const std::string& program) {

@@ -22,7 +22,6 @@ std::optional<std::string> race(std::vector<Entrant>& entrants, int repeats,
             if (!t.ok() || (entrant.readLog && !entrant.readLog(log))) return entrant.name;
             entrant.wall.push_back(t.wall);
             entrant.cpu.push_back(t.cpu);
-            entrant.peakRssKiB.push_back(t.peakRssKiB);
             progress.update(++runs, 0);
         }
     }

@@ -18,7 +18,6 @@ struct Entrant {
     // JSON); false counts the run as failed.
     std::function<bool(const std::filesystem::path& log)> readLog;
     std::vector<double> wall, cpu;  // seconds, one per run
-    std::vector<long> peakRssKiB;   // one per run
 
     double medianWall() const;
     double medianCpu() const;

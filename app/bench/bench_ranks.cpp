@@ -40,9 +40,9 @@ std::string runRankComparison([[maybe_unused]] const RankSettings& settings) {
     setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 0);
     const int half = std::max(1, threads / 2);
     std::vector<Entrant> variants = {
-        {"strata render, " + threadsText(threads), render(threads, "ranks-single.exr"), {}, {}, {}, {}},
-        {"mpiexec -np 1, " + threadsText(threads), ranks(1, render(threads, "ranks-1.exr")), {}, {}, {}, {}},
-        {"mpiexec -np 2, " + threadsText(half) + " each", ranks(2, render(half, "ranks-2.exr")), {}, {}, {}, {}}};
+        {"strata render, " + threadsText(threads), render(threads, "ranks-single.exr"), {}, {}, {}},
+        {"mpiexec -np 1, " + threadsText(threads), ranks(1, render(threads, "ranks-1.exr")), {}, {}, {}},
+        {"mpiexec -np 2, " + threadsText(half) + " each", ranks(2, render(half, "ranks-2.exr")), {}, {}, {}}};
     const auto log = settings.outDir / "ranks.log";
     if (const auto failed = race(variants, settings.repeats, log, "mpi ranks")) {
         return title + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";

@@ -6,6 +6,7 @@
 
 #include "bench/bench_output.h"
 #include "bench/bench_race.h"
+#include "bench/process_memory.h"
 #include "bench/render_rate.h"
 #include "bench/strata_child.h"
 #include "scene/scene_format.h"
@@ -83,10 +84,20 @@ std::string runRealScenes(const RealScenesSettings& settings) {
     // they cannot run (no offscreen OpenGL, or a sanitizer build stopping on Mesa's leaks), the
     // rest of the section stands.
     std::vector<Entrant> renders, views;
-    for (const RealScene& s : scenes) {
+    // The renders' own peak resident sets, from their reports (process_memory.h), per scene.
+    std::vector<long> peakKiB(scenes.size(), 0);
+    for (size_t k = 0; k < scenes.size(); ++k) {
+        const RealScene& s = scenes[k];
         RenderOptions o = options;
         o.scene = s.path.string();
-        renders.push_back({s.name, renderCommandLine(o, settings.spp), {}, {}, {}, {}});
+        std::vector<std::string> argv = renderCommandLine(o, settings.spp);
+        argv.push_back("--json");
+        const auto readPeak = [&peak = peakKiB[k]](const fs::path& log) {
+            const long reported = reportedPeakResidentKiB(log);
+            peak = std::max(peak, reported);
+            return reported >= 0;
+        };
+        renders.push_back({s.name, std::move(argv), readPeak, {}, {}});
         o.width.reset();  // the viewer's image follows its window
         o.height.reset();
         views.push_back({s.name + " (strata view)",
@@ -94,7 +105,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
                                            {"--headless", "--window", std::to_string(settings.viewerWidth),
                                             std::to_string(settings.viewerHeight), "--frames", "1",
                                             "--target-spp", "1"}),
-                         {}, {}, {}, {}});
+                         {}, {}, {}});
     }
     const fs::path log = settings.outDir / "real-scenes.log";
     if (const auto failed = race(renders, settings.repeats, log, "real scenes")) {
@@ -115,12 +126,11 @@ std::string runRealScenes(const RealScenesSettings& settings) {
                                               static_cast<uint32_t>(settings.ratePasses));
         if (k == 0) baselineRate = rate.mpathsPerCpuSecond();
         const Entrant& render = renders[k];
-        const long peakKiB = *std::max_element(render.peakRssKiB.begin(), render.peakRssKiB.end());
         table.add({scenes[k].name, std::to_string(loading.triangles), cell("%.1f", loading.readSeconds * 1e3),
                    cell("%.1f", loading.parseSeconds * 1e3), cell("%.1f", loading.buildSeconds * 1e3),
                    cell("%.3f", render.medianWall()), viewFailed ? "-" : cell("%.3f", views[k].medianWall()),
                    cell("%.3f", rate.mpathsPerCpuSecond()),
-                   cell("%.3f", rate.mpathsPerCpuSecond() / baselineRate), cell("%.1f", peakKiB / 1024.0)});
+                   cell("%.3f", rate.mpathsPerCpuSecond() / baselineRate), cell("%.1f", peakKiB[k] / 1024.0)});
     }
     writeFile(settings.outDir / "real-scenes.csv", table.csv());
     // cell() formats at most 255 characters: the note is put together from short pieces.
@@ -129,7 +139,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
                 threadsText(threads).c_str()) +
            "Read, parse and BVH build: in this process, once. " +
            cell("First image: `strata render --spp %d`, the whole process, median of %d alternated "
-                "run(s); peak RSS: the largest of those runs. ", settings.spp, settings.repeats) +
+                "run(s); peak RSS: the largest those runs reported of their own (VmHWM). ", settings.spp, settings.repeats) +
            cell("Viewer first image: `strata view --headless --window %d %d --target-spp 1`, the whole "
                 "process until both sides of its split view hold one path per pixel, median of %d "
                 "alternated run(s)", settings.viewerWidth, settings.viewerHeight, settings.repeats) +

@@ -9,6 +9,7 @@
 
 #include "bench/bench_output.h"
 #include "bench/bench_process.h"
+#include "bench/process_memory.h"
 #include "bench/strata_child.h"
 #include "util/constants.h"
 #include "sampling/hemisphere.h"
@@ -90,10 +91,12 @@ long peakRssOfFullHdRender(const std::filesystem::path& scene, const std::filesy
     options.depth = 0;
     options.threads = threads;
     const auto image = outDir / "rss-probe.exr";
-    const ProcessTiming t =
-        runTimed(renderCommandLine(options, kPathsPerPass, image), outDir / "rss-probe.log");
+    const auto log = outDir / "rss-probe.log";
+    std::vector<std::string> argv = renderCommandLine(options, kPathsPerPass, image);
+    argv.push_back("--json");
+    const ProcessTiming t = runTimed(argv, log);
     std::filesystem::remove(image);
-    return t.ok() ? t.peakRssKiB : -1;
+    return t.ok() ? reportedPeakResidentKiB(log) : -1;
 }
 
 // ns per call of `sample(i)` over `count` calls; the checksum keeps the work from being removed.

@@ -1,11 +1,11 @@
 #include "bench/bench_viewer.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 #include <vector>
 
 #include "bench/bench_output.h"
+#include "bench/bench_process.h"
 #include "bench/bench_race.h"
 #include "bench/strata_child.h"
 #include "io/output_file.h"
@@ -15,16 +15,6 @@ namespace {
 
 const std::string kTitle = "\n### The viewer: throughput against `strata render`, UI frame times\n\n";
 
-// The report `strata view --json` printed: the last line of the log that is a JSON object.
-nlohmann::json viewReport(const std::filesystem::path& log) {
-    std::ifstream in(log);
-    std::string report;
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.front() == '{') report = line;
-    }
-    return nlohmann::json::parse(report, nullptr, false);  // discarded (not an object) if none
-}
-
 // What the `strata view --json` runs reported, one entry per run.
 struct ViewReports {
     std::vector<double> p50, p95;
@@ -32,7 +22,7 @@ struct ViewReports {
 
     // Reads the run's report from its log; false when there is none.
     bool read(const std::filesystem::path& log) {
-        const nlohmann::json report = viewReport(log);
+        const nlohmann::json report = lastJsonReport(log);
         if (!report.is_object()) return false;
         p50.push_back(report.value("frame_ms_p50", 0.0));
         p95.push_back(report.value("frame_ms_p95", 0.0));
@@ -69,10 +59,10 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
 
     ViewReports viewReports, splitReports;
     std::vector<Entrant> entrants = {
-        {"strata render", renderCommandLine(batch, settings.spp), {}, {}, {}, {}},
-        {"strata view --headless", view, [&](const auto& log) { return viewReports.read(log); }, {}, {}, {}},
+        {"strata render", renderCommandLine(batch, settings.spp), {}, {}, {}},
+        {"strata view --headless", view, [&](const auto& log) { return viewReports.read(log); }, {}, {}},
         {"strata view --headless (split view)", splitView,
-         [&](const auto& log) { return splitReports.read(log); }, {}, {}, {}}};
+         [&](const auto& log) { return splitReports.read(log); }, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "viewer")) {
         return kTitle + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
     }
