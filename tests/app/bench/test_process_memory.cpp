@@ -1,0 +1,32 @@
+// This process's peak resident memory, and a child's as it reports it (process_memory.h).
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "bench/bench_process.h"
+#include "bench/process_memory.h"
+#include "test_support.h"
+
+using namespace strata;
+
+TEST_CASE("process memory: VmHWM follows this process's own pages, and a child reports its own, not its parent's") {
+    const long before = peakResidentKiB();
+    REQUIRE(before > 0);
+    // 256 MiB touched page by page: the parent's resident set grows by that much.
+    std::vector<char> ballast(256u << 20);
+    for (size_t i = 0; i < ballast.size(); i += 4096) ballast[i] = 1;
+    CHECK(peakResidentKiB() >= before + (250L << 10));
+    // A small render in a child: what it reports is far below the parent's 256 MiB, which the
+    // rusage of a spawned child would include.
+    const auto dir = test::scratchDir("process-memory");
+    const ProcessTiming timing = runTimed({STRATA_BINARY, "render", "--width", "16", "--height", "16", "--spp", "24",
+                                           "--depth", "1", "--threads", "1", "--json"}, dir / "render.log");
+    REQUIRE(timing.ok());
+    const long child = reportedPeakResidentKiB(dir / "render.log");
+    CHECK(child > 0);
+    CHECK(child < (160L << 10));
+    CHECK(ballast[ballast.size() - 4096] == 1);
+    // A log without a report reads as none.
+    REQUIRE(runTimed({"sh", "-c", "echo no report"}, dir / "none.log").ok());
+    CHECK(reportedPeakResidentKiB(dir / "none.log") == -1);
+}
