@@ -20,11 +20,17 @@ tests/data/cornell_point/  The Cornell box's room and blocks without the area li
           point light just under the ceiling's centre (in its description, W/sr in mm units): the
           Cornell light's colour, about the irradiance that light gives the floor below it. A scene
           whose light has no radiance bound (K_eps) and that only next-event estimation lights.
+sky/      sun-sky.exr: a latitude-longitude HDR sky (256 x 128, +y up, the image's centre along -z,
+          as --env reads it): a blue gradient from the horizon to the zenith over a dark ground,
+          and a sun 2.5 degrees in radius at 35 degrees elevation toward -z/+x, whose radiance
+          gives a surface facing it about three times the sky's irradiance. Written as an
+          uncompressed scanline EXR by the few lines of write_exr below.
 Every polygon is written counter-clockwise as seen from the side it faces (its front).
 """
 import json
 import math
 import os
+import struct
 
 
 def sub(a, b):
@@ -279,9 +285,63 @@ def glossy():
                 "fov_y": 32, "width": 480, "height": 270})
 
 
+def write_exr(path, width, height, pixel):
+    """An uncompressed scanline OpenEXR of 32-bit float B, G, R channels (OpenEXR's file layout:
+    the magic number and version, the header's attributes, a scanline offset table, then each
+    scanline as its y, its byte count and each channel's row in the channels' order)."""
+    def attribute(name, kind, value):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(value)) + value
+
+    channels = b"".join(c.encode() + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for c in "BGR") + b"\0"
+    window = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    header = (struct.pack("<ii", 20000630, 2) +
+              attribute("channels", "chlist", channels) +
+              attribute("compression", "compression", b"\0") +
+              attribute("dataWindow", "box2i", window) +
+              attribute("displayWindow", "box2i", window) +
+              attribute("lineOrder", "lineOrder", b"\0") +
+              attribute("pixelAspectRatio", "float", struct.pack("<f", 1.0)) +
+              attribute("screenWindowCenter", "v2f", struct.pack("<ff", 0.0, 0.0)) +
+              attribute("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
+    row_bytes = 3 * 4 * width
+    first = len(header) + 8 * height
+    offsets = b"".join(struct.pack("<Q", first + y * (8 + row_bytes)) for y in range(height))
+    rows = []
+    for y in range(height):
+        texels = [pixel(x, y) for x in range(width)]
+        data = b"".join(struct.pack(f"<{width}f", *(t[c] for t in texels)) for c in (2, 1, 0))
+        rows.append(struct.pack("<ii", y, row_bytes) + data)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "wb") as f:
+        f.write(header + offsets + b"".join(rows))
+
+
+def sky():
+    width, height = 256, 128
+    elevation, azimuth, radius = math.radians(35.0), math.radians(20.0), math.radians(2.5)
+    # The map's convention: theta from +y, phi from -z toward +x.
+    sun = [math.cos(elevation) * math.sin(azimuth), math.sin(elevation), -math.cos(elevation) * math.cos(azimuth)]
+    zenith, horizon, ground = [0.25, 0.45, 1.0], [0.95, 0.97, 1.0], [0.18, 0.16, 0.14]
+    sun_radiance = [2000.0, 1900.0, 1700.0]
+
+    def pixel(x, y):
+        theta = math.pi * (y + 0.5) / height
+        phi = 2.0 * math.pi * ((x + 0.5) / width - 0.5)
+        d = [math.sin(theta) * math.sin(phi), math.cos(theta), -math.sin(theta) * math.cos(phi)]
+        if dot(d, sun) > math.cos(radius):
+            return sun_radiance
+        if d[1] < 0.0:
+            return ground
+        t = d[1] ** 0.5  # the blue deepens quickly above the horizon
+        return [horizon[i] + (zenith[i] - horizon[i]) * t for i in range(3)]
+
+    write_exr("assets/sky/sun-sky.exr", width, height, pixel)
+
+
 if __name__ == "__main__":
     cornell()
     cornell_point()
     cornell_glass()
     furnace()
     glossy()
+    sky()

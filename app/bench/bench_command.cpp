@@ -223,6 +223,18 @@ void BenchCommand::run() const {
         peer.seed = seed;
         peer.outDir = out;
         summary += runCyclesComparison(peer);
+        // A real model under a uniform sky, untextured (the script's materials are), in a folder
+        // of its own: its files and cached reference apart from the Cornell box's.
+        const fs::path wuson = kAssimpModels / "OBJ" / "WusonOBJ.obj";
+        if (fs::is_regular_file(wuson)) {
+            peer.scene = wuson;
+            peer.sky = glm::vec3(1.0f);
+            peer.outDir = out / "vs-cycles-WusonOBJ";
+            fs::create_directories(peer.outDir);
+            summary += runCyclesComparison(peer);
+        } else {
+            summary += "\nSkipped Cycles on " + wuson.string() + ": not installed (apt-get install assimp-testmodels).\n";
+        }
     }
     if (runs("viewer", skipThroughput)) {
         ViewerBenchSettings viewer;
@@ -292,7 +304,8 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--vs-embree", command->vsEmbree,
                   "Also race Embree's tutorial pathtracer on ../shared/scenes/cornell_point");
     sub->add_flag("--vs-cycles", command->vsCycles,
-                  "Also set Strata against Blender's Cycles on the Cornell box (needs blender)");
+                  "Also set Strata against Blender's Cycles on the Cornell box and assimp's Wuson under a "
+                  "uniform sky (needs blender)");
     sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
     sub->add_flag("--skip-real-scenes", command->skipRealScenes,
                   "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");

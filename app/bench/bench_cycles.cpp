@@ -34,19 +34,25 @@ namespace fs = std::filesystem;
 // references have of its largest checkpoint.
 constexpr int kReferenceSppFactor = 16;
 
-// Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds diffuse
-// materials with one-sided emission, flat triangles and a black world, and nothing else.
-std::string unsupported(const MeshData& mesh) {
+// Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds untextured
+// diffuse materials with one-sided emission (a model without materials keeps Cycles' default
+// surface, Lambertian 0.8 like Strata's), keeps the OBJ's vertex normals, and lights the scene by
+// its emitters or by a uniform sky, nothing else.
+std::string unsupported(const MeshData& mesh, bool sky) {
     if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return "it has point or directional lights";
-    if (!mesh.normals.empty()) return "it has shading normals";
     bool emits = false;
     for (const Material& m : mesh.materials) {
-        if (m.specular != glm::vec3(0.0f)) return "material " + m.name + " has a specular layer (Ks)";
+        if (m.specular != glm::vec3(0.0f) || m.transmission > 0.0f || m.clearcoat > 0.0f || m.metallicRoughness) {
+            return "material " + m.name + " is not Lambertian";
+        }
+        if (m.hasReflectanceTextures() || m.textures.emission || m.textures.coverage || m.textures.normal) {
+            return "material " + m.name + " is textured";
+        }
         emits = emits || m.emission != glm::vec3(0.0f);
     }
     const auto env = mesh.environment.kind;
-    if (!(env == Environment::Kind::None || (env == Environment::Kind::Default && emits))) {
-        return "it is lit by an environment";
+    if (!(env == Environment::Kind::None || (env == Environment::Kind::Default && (emits || sky)))) {
+        return "it is lit by an environment of its own";
     }
     return "";
 }
@@ -95,7 +101,11 @@ struct StrataRun {
 }  // namespace
 
 std::string runCyclesComparison(const CyclesBenchSettings& settings) {
-    const std::string title = "\n### Against Blender's Cycles (" + settings.scene.string() + ")\n\n";
+    const std::string title = "\n### Against Blender's Cycles (" + settings.scene.string() +
+                              (settings.sky ? cell(", under a uniform sky of %g %g %g", settings.sky->x,
+                                                   settings.sky->y, settings.sky->z)
+                                            : std::string()) +
+                              ")\n\n";
     if (!onPath("blender")) {
         std::fprintf(stderr, "note: --vs-cycles skipped: no blender on PATH (scripts/setup.sh --peers)\n");
         return title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n";
@@ -103,9 +113,13 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     if (!fs::is_regular_file(settings.scene)) {
         return title + "Skipped: " + settings.scene.string() + " is missing.\n";
     }
-    const LoadedScene loaded = loadScene(settings.scene);
+    // What every render of the comparison shares: the scene and its lighting.
+    RenderOptions scene;
+    scene.scene = settings.scene.string();
+    if (settings.sky) scene.envColor = {settings.sky->x, settings.sky->y, settings.sky->z};
+    const LoadedScene loaded = scene.loadScene();
     const MeshData& mesh = loaded.scene.mesh();
-    if (const std::string why = unsupported(mesh); !why.empty()) {
+    if (const std::string why = unsupported(mesh, settings.sky.has_value()); !why.empty()) {
         return title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n";
     }
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
@@ -118,8 +132,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
 
     // One converged reference for every image: Strata's, with next-event estimation (the key
     // holds the depth and the NEE flag, not the sampler; every unbiased sampler converges to it).
-    RenderOptions reference;
-    reference.scene = settings.scene.string();
+    RenderOptions reference = scene;
     reference.depth = settings.depth;
     reference.nee = true;
     reference.threads = threads;
@@ -143,6 +156,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         job.obj = settings.scene;
         job.scale = cyclesUnitScale(mesh);
         job.materials = mesh.materials;
+        job.sky = settings.sky.value_or(glm::vec3(0.0f));
         job.pose = camera.pose();
         job.width = settings.width;
         job.height = settings.height;
@@ -186,7 +200,8 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     configs[6].options.sampler = "bsdf";
     configs[6].options.rouletteDepth = 2;
     for (StrataConfig& config : configs) {
-        config.options.scene = settings.scene.string();
+        config.options.scene = scene.scene;
+        config.options.envColor = scene.envColor;
         config.options.width = settings.width;
         config.options.height = settings.height;
         config.options.depth = settings.depth;
@@ -274,7 +289,8 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         writeFile(out / file, csv);
         series.push_back({renderer, file});
     }
-    const std::string plotTitle = sceneName(settings.scene) + cell(", %dx%d, depth %d, ", settings.width,
+    const std::string plotTitle = sceneName(settings.scene) + (settings.sky ? " under a uniform sky" : "") +
+                                  cell(", %dx%d, depth %d, ", settings.width,
                                                                    settings.height, settings.depth) +
                                   threadsText(threads);
     runGnuplot(out, "vs-cycles", cyclesPlotScript(series, "vs-cycles.png", plotTitle));
@@ -293,7 +309,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
            "relMSE falls as 1/time), so its ratio is the one to read. Equal-time spp come from the "
            "line through each configuration's two same-spp times. Cycles' settings: no adaptive "
            "sampling, denoising, clamping, glossy blur or light threshold, one bounce cap for every "
-           "kind, a 1-pixel box filter, one-sided emission, the scene scaled to unit size "
+           "kind, a 1-pixel box filter, one-sided emission, the OBJ's vertex normals, the scene scaled to unit size "
            "(script: " + script.string() + "; plot: " + (out / "vs-cycles.png").string() + ").\n";
 }
 

@@ -19,9 +19,6 @@ namespace fs = std::filesystem;
 
 const std::string kTitle = "\n### Real scenes: loading, BVH build, first image, throughput, memory\n\n";
 
-// Where Debian's assimp-testmodels installs them: read in place, never copied into the repository.
-const fs::path kAssimpModels = "/usr/share/assimp/models";
-
 struct RealScene {
     std::string name;
     fs::path path;

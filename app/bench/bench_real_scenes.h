@@ -8,6 +8,10 @@
 
 namespace strata {
 
+// Where Debian's assimp-testmodels installs its models: read in place, never copied into the
+// repository.
+inline const std::filesystem::path kAssimpModels = "/usr/share/assimp/models";
+
 struct RealScenesSettings {
     std::filesystem::path baseline;  // the Cornell box the others are compared with
     int depth = 5;

@@ -73,10 +73,12 @@ for material in bpy.data.materials:
         raise RuntimeError("the OBJ's material '%s' is not in %s" % (material.name, parameters_file))
     lambertian(material, materials[material.name]["kd"], materials[material.name]["ke"])
 
-world = bpy.data.worlds.new("black")
+# A uniform sky of radiance `sky` (Strata's --env-color), or black; how Cycles samples it is left
+# at its factory setting (automatic).
+world = bpy.data.worlds.new("sky")
 world.use_nodes = True
-world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
-world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+world.node_tree.nodes["Background"].inputs["Color"].default_value = (*params["sky"], 1.0)
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
 scene.world = world
 
 # Strata's pinhole looks from position at look_at, right = forward x up, fov_y the vertical field
@@ -163,6 +165,7 @@ std::string cyclesParameters(const CyclesJob& job) {
         {"obj", std::filesystem::absolute(job.obj).string()},
         {"scale", job.scale},
         {"materials", materials},
+        {"sky", triple(job.sky.x, job.sky.y, job.sky.z)},
         {"position", triple(pose.position.x, pose.position.y, pose.position.z)},
         {"look_at", triple(pose.lookAt.x, pose.lookAt.y, pose.lookAt.z)},
         {"up", triple(pose.up.x, pose.up.y, pose.up.z)},

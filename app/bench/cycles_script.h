@@ -22,6 +22,7 @@ struct CyclesJob {
     // Blender scales the scene and camera by this inside (cyclesUnitScale); radiance is scale-free.
     double scale = 1.0;
     std::vector<Material> materials;  // found by name in the OBJ's MTL
+    glm::vec3 sky{0.0f};              // the world's uniform radiance (black: the emitters alone)
     CameraPose pose;
     int width = 256;
     int height = 256;

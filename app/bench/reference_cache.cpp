@@ -111,6 +111,17 @@ uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
     hash.addValue(integrator.depth);
     const uint8_t nee = integrator.nextEventEstimation ? 1 : 0;
     hash.addValue(nee);
+    // The sky the scene is lit by, which options (--env-color, --env) give outside its files. A
+    // scene that is dark outside adds nothing, so keys made before skies were hashed still hold.
+    const Environment& environment = loaded.scene.lights().environment();
+    if (environment.kind == Environment::Kind::Uniform) {
+        hash.addValue(environment.radiance.x);
+        hash.addValue(environment.radiance.y);
+        hash.addValue(environment.radiance.z);
+    } else if (environment.kind == Environment::Kind::Map) {
+        hash.addValue(environment.rotationDegrees);
+        for (const glm::vec3& texel : environment.map->image().pixels) hash.addValue(texel);
+    }
     return hash.value();
 }
 

@@ -1,7 +1,9 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "bench/reference_cache.h"
 #include "test_support.h"
@@ -70,6 +72,31 @@ TEST_CASE("reference cache: the key changes with the files, camera and depth, an
     CHECK(path.filename().string().rfind("cornell-d3-", 0) == 0);
     CHECK(path.extension() == ".exr");
     CHECK(sceneName("x/cornell_point/scene.obj") == "cornell_point");
+}
+
+TEST_CASE("reference cache: the key changes with the sky the scene is lit by") {
+    const auto keyUnder = [](const Environment& sky) {
+        LoadedScene loaded = loadScene(test::sourceDir() / "assets" / "cornell" / "cornell.obj");
+        const uint64_t dark = referenceKey(loaded, Camera(loaded.settings.pose, 16, 16), depth(5));
+        loaded.scene.setEnvironment(sky);
+        return std::pair{dark, referenceKey(loaded, Camera(loaded.settings.pose, 16, 16), depth(5))};
+    };
+    Environment sky;
+    sky.kind = Environment::Kind::None;
+    const auto [dark, none] = keyUnder(sky);
+    CHECK(none == dark);  // the box is dark outside as loaded
+    sky.kind = Environment::Kind::Uniform;
+    sky.radiance = glm::vec3(1.0f);
+    const uint64_t white = keyUnder(sky).second;
+    CHECK(white != dark);
+    sky.radiance = glm::vec3(1.0f, 1.0f, 0.5f);
+    CHECK(keyUnder(sky).second != white);
+    sky.kind = Environment::Kind::Map;
+    sky.map = std::make_shared<const EnvironmentMap>(Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(1.0f))}, "map");
+    const uint64_t map = keyUnder(sky).second;
+    CHECK(map != dark);
+    sky.rotationDegrees = 10.0f;
+    CHECK(keyUnder(sky).second != map);
 }
 
 TEST_CASE("reference cache: one changed byte of an MTL file, the description or the camera file changes the key") {
