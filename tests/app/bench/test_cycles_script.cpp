@@ -45,6 +45,10 @@ TEST_CASE("cycles script: the parameters hold the job, by the names the script r
     CHECK(parameters["spp"] == 72);
     CHECK(parameters["threads"] == 2);
     CHECK(parameters["seed"] == 7);
+    CHECK(parameters["sky"] == nlohmann::json::array({0.0, 0.0, 0.0}));  // the box: a black world
+    CyclesJob underSky = cornellJob();
+    underSky.sky = {0.5f, 1.0f, 2.0f};
+    CHECK(nlohmann::json::parse(cyclesParameters(underSky))["sky"] == nlohmann::json::array({0.5, 1.0, 2.0}));
 
     // Every parameter is read by the script, and the script reads no other.
     const std::string script(cyclesScript());
@@ -65,7 +69,7 @@ TEST_CASE("cycles script: it sets what makes Cycles' image Strata's") {
              "forward_axis='Y', up_axis='Z'",                 // OBJ axes as they are
              "global_scale=scale",                            // unit size for the light sampler
              "geometry.outputs[\"Backfacing\"]",              // one-sided emission
-             "scene.world = world",                           // a black world
+             "scene.world = world",                           // black, or the job's sky
              "sensor_fit = 'VERTICAL'",                       // fov_y is the vertical angle
              "use_adaptive_sampling = False", "use_denoising = False",
              "sample_clamp_indirect = 0.0", "blur_glossy = 0.0", "light_sampling_threshold = 0.0",
