@@ -233,7 +233,8 @@ void BenchCommand::run() const {
             fs::create_directories(peer.outDir);
             summary += runCyclesComparison(peer);
         } else {
-            summary += "\nSkipped Cycles on " + wuson.string() + ": not installed (apt-get install assimp-testmodels).\n";
+            summary += "\nSkipped Cycles on " + wuson.string() +
+                       ": not installed (apt-get install assimp-testmodels).\n";
         }
     }
     if (runs("viewer", skipThroughput)) {

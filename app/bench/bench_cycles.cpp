@@ -290,8 +290,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         series.push_back({renderer, file});
     }
     const std::string plotTitle = sceneName(settings.scene) + (settings.sky ? " under a uniform sky" : "") +
-                                  cell(", %dx%d, depth %d, ", settings.width,
-                                                                   settings.height, settings.depth) +
+                                  cell(", %dx%d, depth %d, ", settings.width, settings.height, settings.depth) +
                                   threadsText(threads);
     runGnuplot(out, "vs-cycles", cyclesPlotScript(series, "vs-cycles.png", plotTitle));
     return title +
@@ -309,7 +308,8 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
            "relMSE falls as 1/time), so its ratio is the one to read. Equal-time spp come from the "
            "line through each configuration's two same-spp times. Cycles' settings: no adaptive "
            "sampling, denoising, clamping, glossy blur or light threshold, one bounce cap for every "
-           "kind, a 1-pixel box filter, one-sided emission, the OBJ's vertex normals, the scene scaled to unit size "
+           "kind, a 1-pixel box filter, one-sided emission, the OBJ's vertex normals, the scene "
+           "scaled to unit size "
            "(script: " + script.string() + "; plot: " + (out / "vs-cycles.png").string() + ").\n";
 }
 

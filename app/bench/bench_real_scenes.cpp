@@ -136,7 +136,8 @@ std::string runRealScenes(const RealScenesSettings& settings) {
                 threadsText(threads).c_str()) +
            "Read, parse and BVH build: in this process, once. " +
            cell("First image: `strata render --spp %d`, the whole process, median of %d alternated "
-                "run(s); peak RSS: the largest those runs reported of their own (VmHWM). ", settings.spp, settings.repeats) +
+                "run(s); peak RSS: the largest those runs reported of their own (VmHWM). ",
+                settings.spp, settings.repeats) +
            cell("Viewer first image: `strata view --headless --window %d %d --target-spp 1`, the whole "
                 "process until both sides of its split view hold one path per pixel, median of %d "
                 "alternated run(s)", settings.viewerWidth, settings.viewerHeight, settings.repeats) +

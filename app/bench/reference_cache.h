@@ -27,8 +27,7 @@ std::optional<glm::vec3> furnaceRadiance(const Scene& scene, const CameraPose& c
 // 64-bit FNV-1a over every file the scene was parsed from (each one's name and bytes: the scene
 // file, those it names, the scene description, the camera file), then the camera pose, the image
 // size, the depth, the next-event flag and the sky in use (its radiance, or its map's texels and
-// rotation). The sampler is not part of it: every unbiased sampler
-// converges to the same image.
+// rotation). The sampler is not part of it: every unbiased sampler converges to the same image.
 uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
                       const PathIntegratorSettings& integrator);
 
