@@ -53,6 +53,12 @@ double integralAboveMean(const Image& map, double mean) {
     return integral;
 }
 
+// The luminance a texel must exceed to be sampled: the map's mean over the sphere, raised by a
+// rounding margin so that a texel equal to the mean is not above it.
+double samplingThreshold(const glm::dvec3& sphereIntegral) {
+    return luminance(sphereIntegral) / (4.0 * M_PI) * (1.0 + 1e-6);
+}
+
 float largestComponent(const Image& map) {
     float largest = 0.0f;
     for (const glm::vec3& texel : map.pixels) largest = std::max({largest, texel.x, texel.y, texel.z});
@@ -64,15 +70,9 @@ float largestComponent(const Image& map) {
 EnvironmentMap::EnvironmentMap(Image image, std::string name)
     : image_(std::move(image)),
       name_(std::move(name)),
-      distribution_({0.0f}, 1, 1),
       sphereIntegral_(integralOverSphere(image_)),
-      sampledIntegral_(0.0),
-      maxRadiance_(largestComponent(image_)) {
-    const double mean = luminance(sphereIntegral_) / (4.0 * M_PI);
-    // A texel that equals the mean but for rounding is not above it.
-    const double above = mean * (1.0 + 1e-6);
-    distribution_ = PiecewiseConstant2D(samplingWeights(image_, above), image_.width, image_.height);
-    sampledIntegral_ = integralAboveMean(image_, above);
-}
+      distribution_(samplingWeights(image_, samplingThreshold(sphereIntegral_)), image_.width, image_.height),
+      sampledIntegral_(integralAboveMean(image_, samplingThreshold(sphereIntegral_))),
+      maxRadiance_(largestComponent(image_)) {}
 
 }  // namespace strata

@@ -46,8 +46,8 @@ public:
 private:
     Image image_;
     std::string name_;
+    glm::dvec3 sphereIntegral_;  // before the distribution, which is built from it
     PiecewiseConstant2D distribution_;
-    glm::dvec3 sphereIntegral_;
     double sampledIntegral_;
     float maxRadiance_;
 };
