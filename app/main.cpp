@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "strata: %s\n", strata::describeParseError(app, e).c_str());
         return strata::kUsageExitStatus;
-    } catch (const strata::ErrorReportedByRankZero& e) {
-        return e.exitStatus;  // an MPI rank other than 0: rank 0 printed the job's error
+    } catch (const strata::ErrorReportedByRankZero&) {
+        return 0;  // an MPI rank other than 0: rank 0 prints the job's error and exits with its status
     } catch (const strata::UsageError& e) {
         std::fprintf(stderr, "strata: %s\n", e.what());
         return strata::kUsageExitStatus;

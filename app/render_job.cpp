@@ -158,7 +158,7 @@ void RenderJob::settle(std::exception_ptr failure) {
     }
 #if STRATA_WITH_MPI
     // The lowest failing rank and its failure's exit status (MINLOC keeps the status of the
-    // lowest rank), so that every rank exits with that status.
+    // lowest rank), which rank 0 reports and exits with.
     struct {
         int rank;
         int exitStatus;
@@ -171,7 +171,7 @@ void RenderJob::settle(std::exception_ptr failure) {
         MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kMessageTag,
                  MPI_COMM_WORLD);
     }
-    if (!isRoot()) throw ErrorReportedByRankZero{first.exitStatus};
+    if (!isRoot()) throw ErrorReportedByRankZero{};
     if (first.rank == 0) std::rethrow_exception(failure);
     MPI_Status status;
     MPI_Probe(first.rank, kMessageTag, MPI_COMM_WORLD, &status);

@@ -18,11 +18,11 @@
 
 namespace strata {
 
-// Thrown on the ranks other than 0 when a step failed: rank 0 prints the one message for the job,
-// the others only exit, with the status rank 0 exits with (usage.h).
-struct ErrorReportedByRankZero {
-    int exitStatus = kInputExitStatus;
-};
+// Thrown on the ranks other than 0 when a step failed: rank 0 prints the one message for the job
+// and exits with its status (usage.h), which becomes the launcher's; the others exit with 0. A
+// launcher ends the whole job as soon as one rank exits non-zero, and a rank that did so could
+// have rank 0 killed before it printed the message.
+struct ErrorReportedByRankZero {};
 
 class RenderJob {
 public:
