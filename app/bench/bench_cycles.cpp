@@ -114,10 +114,10 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         return title + "Skipped: " + settings.scene.string() + " is missing.\n";
     }
     // What every render of the comparison shares: the scene and its lighting.
-    RenderOptions scene;
-    scene.scene = settings.scene.string();
-    if (settings.sky) scene.envColor = {settings.sky->x, settings.sky->y, settings.sky->z};
-    const LoadedScene loaded = scene.loadScene();
+    RenderOptions sceneOptions;
+    sceneOptions.scene = settings.scene.string();
+    if (settings.sky) sceneOptions.envColor = {settings.sky->x, settings.sky->y, settings.sky->z};
+    const LoadedScene loaded = sceneOptions.loadScene();
     const MeshData& mesh = loaded.scene.mesh();
     if (const std::string why = unsupported(mesh, settings.sky.has_value()); !why.empty()) {
         return title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n";
@@ -132,7 +132,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
 
     // One converged reference for every image: Strata's, with next-event estimation (the key
     // holds the depth and the NEE flag, not the sampler; every unbiased sampler converges to it).
-    RenderOptions reference = scene;
+    RenderOptions reference = sceneOptions;
     reference.depth = settings.depth;
     reference.nee = true;
     reference.threads = threads;
@@ -200,8 +200,8 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     configs[6].options.sampler = "bsdf";
     configs[6].options.rouletteDepth = 2;
     for (StrataConfig& config : configs) {
-        config.options.scene = scene.scene;
-        config.options.envColor = scene.envColor;
+        config.options.scene = sceneOptions.scene;
+        config.options.envColor = sceneOptions.envColor;
         config.options.width = settings.width;
         config.options.height = settings.height;
         config.options.depth = settings.depth;

@@ -74,7 +74,8 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     // The point, found in double, is rounded once to float.
     const glm::vec3 onLight(glm::dvec3(point) + distance * direction);
     return sampleAt(onLight, glm::vec3(direction), static_cast<float>(distance),
-                    radianceAlong(glm::dvec3(point), direction, distance), static_cast<float>(1.0 / triangle->solidAngle()));
+                    radianceAlong(glm::dvec3(point), direction, distance),
+                    static_cast<float>(1.0 / triangle->solidAngle()));
 }
 
 std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::vec2 u) const {
