@@ -34,6 +34,7 @@ struct BenchCommand {
     bool quick = false;
     std::string outDir = "bench-out";
     std::vector<int> depths{5};
+    bool depthsGiven = false;  // --depth was given; otherwise the Embree race runs at two lengths
     int width = 0;
     int maxSpp = 0;
     double maxSeconds = 60.0;
@@ -206,14 +207,18 @@ void BenchCommand::run() const {
         summary += "\n" + runThroughput(throughput);
     }
     if (runs("embree", !vsEmbree)) {
+        // Path lengths 6 and 9 unless --depth says otherwise: the longer one weighs the cost per
+        // bounce, the shorter the cost per path (camera ray, samples, accumulation) more.
         PeerSettings peer;
         peer.scene = kSharedScenes / "cornell_point" / "scene.obj";
-        peer.depth = depths.front();
         peer.spp = quick ? 24 : 96;
         peer.repeats = quick ? 1 : 3;
         peer.threads = threads;
         peer.outDir = out;
-        summary += runPeerComparison(peer);
+        for (int depth : depthsGiven || quick ? std::vector<int>{depths.front()} : std::vector<int>{5, 8}) {
+            peer.depth = depth;
+            summary += runPeerComparison(peer);
+        }
     }
     if (runs("cycles", !vsCycles)) {
         CyclesBenchSettings peer;
@@ -293,7 +298,9 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--quick", command->quick,
                   "Small sizes and budgets: the CI smoke run, about 40 s on 2 idle cores");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
-    sub->add_option("--depth", command->depths, "Recursion depth(s) K (repeatable)")->capture_default_str();
+    CLI::Option* depth = sub->add_option("--depth", command->depths,
+                                         "Recursion depth(s) K (repeatable); the Embree race's default: 5 and 8")
+                             ->capture_default_str();
     sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
     sub->add_option("--max-spp", command->maxSpp, "Last checkpoint, a multiple of 24 (default 384)");
     sub->add_option("--max-seconds", command->maxSeconds, "Time budget per run (stops at the next checkpoint)")
@@ -317,7 +324,10 @@ void addBenchCommand(CLI::App& app) {
                   "Read the files the scenes refer to also outside their folders (your own scenes only)");
     sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
-    sub->callback([command] { command->run(); });
+    sub->callback([command, depth] {
+        command->depthsGiven = depth->count() > 0;
+        command->run();
+    });
 }
 
 }  // namespace strata
