@@ -1,6 +1,7 @@
 #include "bench/bench_convergence.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -35,22 +36,30 @@ void renderWithProgress(RenderSession& session, const RenderBudget& budget, Prog
     });
 }
 
-Image renderReference(const LoadedScene& loaded, const Camera& camera, RenderOptions options,
-                      const ConvergenceSettings& settings) {
-    options.sampler = "strata24";
-    options.seed = settings.seed + kReferenceSeedOffset;
-    RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene),
-                          {0, settings.referencePasses});
-    ProgressReporter progress("reference " + sceneName(loaded.scenePath()), settings.referencePasses,
-                              kPathsPerPass);
-    renderWithProgress(session, {}, progress);
-    progress.finish(session.completedPasses(), session.counters().paths);
-    return session.buffer().meanImage();
+// The reference's two halves, each of half the passes (rounded up) and its own seed.
+std::pair<Image, Image> renderReferenceHalves(const LoadedScene& loaded, const Camera& camera, RenderOptions options,
+                                              const ConvergenceSettings& settings) {
+    const uint32_t passes = (settings.referencePasses + 1) / 2;
+    ProgressReporter progress("reference " + sceneName(loaded.scenePath()), 2 * passes, kPathsPerPass);
+    std::array<Image, 2> halves;
+    uint64_t pathsBefore = 0;
+    for (uint32_t half = 0; half < 2; ++half) {
+        options.seed = settings.seed + kReferenceSeedOffset + half;
+        RenderSession session(loaded.scene, camera, options.renderSettings(loaded.scene), {0, passes});
+        session.run({}, [&](const PassReport& report) {
+            progress.update(half * passes + report.passes, pathsBefore + session.counters().paths);
+        });
+        pathsBefore += session.counters().paths;
+        halves[half] = session.buffer().meanImage();
+    }
+    progress.finish(2 * passes, pathsBefore);
+    return {std::move(halves[0]), std::move(halves[1])};
 }
 
-ImageError measure(const Image& image, const Reference& reference) {
-    return reference.constant ? imageError(image, *reference.constant)
-                              : imageError(image, reference.image);
+Image meanOf(const Image& a, const Image& b) {
+    Image mean = a;
+    for (size_t i = 0; i < mean.pixels.size(); ++i) mean.pixels[i] = 0.5f * (a.pixels[i] + b.pixels[i]);
+    return mean;
 }
 
 // Checkpoints at 1, 2, 4, ... passes and at the last; the run ends at the first checkpoint past
@@ -153,7 +162,7 @@ std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& 
                                        const RenderOptions& options, const ConvergenceSettings& settings) {
     const PathIntegratorSettings integrator = options.renderSettings(loaded.scene).integrator;
     if (auto exact = furnaceRadiance(loaded.scene, camera.pose(), integrator)) {
-        return Reference{exact, {}, "analytic"};
+        return Reference{exact, {}, "analytic", {}};
     }
     if (settings.referenceFile) {
         Image image = readExr(*settings.referenceFile);
@@ -163,21 +172,28 @@ std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& 
                         ", but the bench renders " + std::to_string(camera.width()) + "x" +
                         std::to_string(camera.height()) + " (use --width)");
         }
-        return Reference{std::nullopt, std::move(image), "file"};
+        return Reference{std::nullopt, std::move(image), "file", {}};
     }
     const auto path = referencePath(settings.outDir / "references", loaded, camera, integrator);
-    if (std::filesystem::is_regular_file(path)) return Reference{std::nullopt, readExr(path), "cache"};
+    auto halfPath = path;
+    halfPath.replace_extension().concat("-half.exr");
+    if (std::filesystem::is_regular_file(path) && std::filesystem::is_regular_file(halfPath)) {
+        return renderedReference(readExr(path), readExr(halfPath), "cache");
+    }
     if (!settings.makeReference) {
         std::fprintf(stderr, "note: no reference %s for %s; run with --make-reference (skipped)\n",
                      path.string().c_str(), loaded.scenePath().string().c_str());
         return std::nullopt;
     }
     std::filesystem::create_directories(path.parent_path());
-    Image image = renderReference(loaded, camera, options, settings);
+    const auto [first, second] = renderReferenceHalves(loaded, camera, options, settings);
+    Image image = meanOf(first, second);
+    writeImage(halfPath, first);
     writeImage(path, image);
-    std::fprintf(stderr, "wrote reference %s\n", path.string().c_str());
-    return Reference{std::nullopt, std::move(image), "made"};
+    std::fprintf(stderr, "wrote reference %s and its first half\n", path.string().c_str());
+    return renderedReference(std::move(image), first, "made");
 }
+
 
 std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) {
     std::vector<ConvergenceRun> runs;

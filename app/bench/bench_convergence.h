@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench/bench_output.h"
+#include "bench/reference_cache.h"
 #include "io/image_io.h"
 #include "render_options.h"
 
@@ -60,18 +61,12 @@ struct ConvergenceRun {
     std::vector<Checkpoint> checkpoints;
 };
 
-// What a run's error is measured against: the exact radiance of an analytic scene, or an image.
-struct Reference {
-    std::optional<glm::vec3> constant;
-    Image image;
-    std::string kind;  // "analytic", "file", "cache" or "made"
-};
-
 // The reference for `loaded` seen by `camera` at `options`' depth and next-event flag: analytic
 // for a furnace (reference_cache.h), else settings.referenceFile, else the cached render in
-// OUT/references, else (settings.makeReference) a strata24 render of settings.referencePasses
-// passes stored there; nullopt, with a note, when there is none. Throws strata::Error for a
-// --reference file of the wrong size.
+// OUT/references, else (settings.makeReference) a render of settings.referencePasses passes with
+// `options`' sampler stored there; nullopt, with a note, when there is none. Throws strata::Error
+// for a --reference file of the wrong size. A render is made as two halves of independent seeds
+// (renderedReference), the first stored beside the mean as NAME-dK-KEY-half.exr.
 std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& camera,
                                        const RenderOptions& options, const ConvergenceSettings& settings);
 

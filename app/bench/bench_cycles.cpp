@@ -145,8 +145,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
                                              reference.renderSettings(loaded.scene).integrator);
     const auto found = findReference(loaded, camera, reference, referenceSettings);
     if (!found || found->constant) return title + "Skipped: no reference image.\n";
-    const Image& referenceImage = found->image;
-    const glm::dvec3 referenceMeans = channelMeans(referenceImage);
+    const glm::dvec3 referenceMeans = channelMeans(found->image);
 
     const auto script = out / "cycles_render.py";
     writeFile(script, std::string(cyclesScript()));
@@ -265,7 +264,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
 
     const auto measured = [&](const fs::path& image) {
         const Image rendered = readExr(image);
-        return std::pair{imageError(rendered, referenceImage).relMse, channelMeans(rendered) / referenceMeans};
+        return std::pair{measure(rendered, *found).relMse, channelMeans(rendered) / referenceMeans};
     };
     std::vector<CyclesRow> rows;
     for (const CyclesRun& c : cycles) {
@@ -298,11 +297,12 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
                 "`strata render` as a whole process (start-up, loading, BVH build, render, writing); "
                 "Cycles' `bpy.ops.render.render()` alone, timed inside Blender (its start-up, scene "
                 "building and image writing excluded). relMSE against one reference (%s, %d spp, "
-                "%s); the last column is each image's channel means over the reference's.\n\n",
+                "%s), less the reference's own relMSE, %.3g, estimated from its two independent "
+                "halves; the last column is each image's channel means over the reference's.\n\n",
                 settings.width, settings.height, settings.depth, cyclesMaxBounces(settings.depth),
                 threadsText(threads).c_str(), settings.repeats,
                 found->kind == "cache" ? "cached Strata render" : "Strata render made now",
-                kReferenceSppFactor * largestSpp, referenceFile.filename().string().c_str()) +
+                kReferenceSppFactor * largestSpp, referenceFile.filename().string().c_str(), found->own.relMse) +
            table.markdown() +
            "\nRatios below 1 favour Strata; relMSE x s is the cost of a given error (Monte Carlo's "
            "relMSE falls as 1/time), so its ratio is the one to read. Equal-time spp come from the "

@@ -143,4 +143,18 @@ std::filesystem::path referencePath(const std::filesystem::path& dir, const Load
                   (integrator.nextEventEstimation ? "-nee-" : "-") + key + ".exr");
 }
 
+Reference renderedReference(Image mean, const Image& firstHalf, std::string kind) {
+    const ImageError own = imageError(firstHalf, mean);
+    return Reference{std::nullopt, std::move(mean), std::move(kind), own};
+}
+
+ImageError measure(const Image& image, const Reference& reference) {
+    ImageError error = reference.constant ? imageError(image, *reference.constant)
+                                          : imageError(image, reference.image);
+    error.mse = std::max(0.0, error.mse - reference.own.mse);
+    error.relMse = std::max(0.0, error.relMse - reference.own.relMse);
+    error.rmse = std::sqrt(error.mse);
+    return error;
+}
+
 }  // namespace strata

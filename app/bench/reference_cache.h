@@ -14,6 +14,8 @@
 #include "scene/camera.h"
 #include "integrator/path_integrator.h"
 #include "scene/scene_loader.h"
+#include "film/image_metrics.h"
+#include "io/image_io.h"
 
 namespace strata {
 
@@ -38,5 +40,27 @@ std::filesystem::path referencePath(const std::filesystem::path& dir, const Load
 // A short name for a scene in tables and file names: the scene file's stem, or its folder's name
 // when the stem is the generic "scene".
 std::string sceneName(const std::filesystem::path& scenePath);
+
+// What a run's error is measured against: the exact radiance of an analytic scene, or an image.
+struct Reference {
+    std::optional<glm::vec3> constant;
+    Image image;
+    std::string kind;  // "analytic", "file", "cache" or "made"
+    // The image's own expected error against the exact one: zero for an analytic reference and
+    // (not known) for a file; for a render, estimated from its two independent halves.
+    ImageError own;
+};
+
+// A reference render: the mean r of two halves of independent seeds and equal spp, and the first
+// half h1. A render x measured against r has E[(x - r)^2] = Var x + Var r per pixel when their
+// noise is independent: at high spp the reference's share is much of what is measured (against a
+// 4224-spp reference a 528-spp render of a model under a uniform sky measured about twice its own
+// error), and it makes every estimator look alike. h1 - h2 = 2 (h1 - r) and Var(h1 - h2) =
+// 4 Var r, so (h1 - r)^2 estimates Var r without bias, and imageError(h1, r) the reference's own.
+Reference renderedReference(Image mean, const Image& firstHalf, std::string kind);
+
+// The error of `image` against `reference`, less the reference's own (Reference::own): an
+// unbiased estimate of the image's error against the exact one (RMSE from the MSE left, >= 0).
+ImageError measure(const Image& image, const Reference& reference);
 
 }  // namespace strata

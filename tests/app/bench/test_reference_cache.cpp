@@ -1,8 +1,10 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "bench/reference_cache.h"
@@ -127,4 +129,55 @@ TEST_CASE("reference cache: one changed byte of an MTL file, the description or 
     CHECK(withCamera != keyOf());
     changeByte(dir / "camera.json", 1, '\t');
     CHECK(keyOf(dir / "camera.json") != withCamera);
+}
+
+namespace {
+
+// An image of `pixels` grey pixels of radiance `truth` plus independent Gaussian noise of
+// standard deviation `sigma` in every channel.
+Image noisy(size_t pixels, float truth, float sigma, std::mt19937& random) {
+    std::normal_distribution<float> noise(0.0f, sigma);
+    Image image{static_cast<int>(pixels), 1, {}, {}};
+    for (size_t i = 0; i < pixels; ++i) image.pixels.emplace_back(truth + noise(random), truth + noise(random), truth + noise(random));
+    return image;
+}
+
+Image mean(const Image& a, const Image& b) {
+    Image m = a;
+    for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = 0.5f * (a.pixels[i] + b.pixels[i]);
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("reference cache: a reference's own noise is estimated from its halves and taken out of the error") {
+    // Halves of variance sh^2 make a reference of variance sh^2 / 2; an independent render of
+    // variance sx^2 then measures sx^2 + sh^2 / 2 against it, of which measure() leaves sx^2.
+    // n = 3 * 200000 squared Gaussians: each mean is within 4 standard errors, sqrt(2/n) relative.
+    constexpr size_t kPixels = 200000;
+    constexpr float kTruth = 0.5f, kHalfSigma = 0.02f, kRenderSigma = 0.01f;
+    std::mt19937 random(7);
+    const Image first = noisy(kPixels, kTruth, kHalfSigma, random);
+    const Image second = noisy(kPixels, kTruth, kHalfSigma, random);
+    const Reference reference = renderedReference(mean(first, second), first, "made");
+    const double tolerance = 4.0 * std::sqrt(2.0 / (3.0 * kPixels));
+
+    const double referenceVariance = kHalfSigma * kHalfSigma / 2.0;
+    CHECK(reference.own.mse == doctest::Approx(referenceVariance).epsilon(tolerance));
+
+    const Image render = noisy(kPixels, kTruth, kRenderSigma, random);
+    const double renderVariance = kRenderSigma * kRenderSigma;
+    const ImageError raw = imageError(render, reference.image);
+    CHECK(raw.mse == doctest::Approx(renderVariance + referenceVariance).epsilon(tolerance));
+    const ImageError corrected = measure(render, reference);
+    // The difference of two estimates, each within the tolerance of its own value.
+    CHECK(std::abs(corrected.mse - renderVariance) < tolerance * (raw.mse + reference.own.mse));
+    CHECK(corrected.rmse == doctest::Approx(std::sqrt(corrected.mse)));
+    CHECK(corrected.relMse == doctest::Approx(raw.relMse - reference.own.relMse));
+}
+
+TEST_CASE("reference cache: an analytic reference has no error of its own to take out") {
+    const Reference exact{glm::vec3(0.5f), {}, "analytic", {}};
+    const Image image{1, 1, {glm::vec3(0.6f)}, {}};
+    CHECK(measure(image, exact).mse == doctest::Approx(0.01));
 }
