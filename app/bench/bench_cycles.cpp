@@ -1,6 +1,7 @@
 #include "bench/bench_cycles.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -192,10 +193,18 @@ CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings) {
     const auto script = out / "cycles_render.py";
     writeFile(script, std::string(cyclesScript()));
     const auto colourTextures = writeColourTextures(mesh, out / "textures");
+    // An OBJ goes to Blender as it is; any other format as the triangles Strata loaded.
+    fs::path blenderModel = sceneOptions.scene;
+    std::string extension = blenderModel.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".obj") {
+        blenderModel = out / (blenderModel.stem().string() + "-for-blender.obj");
+        writeMeshObj(mesh, blenderModel);
+    }
     std::vector<CyclesRun> cycles;
     for (int spp : cyclesSpp) {
         CyclesJob job;
-        job.model = sceneOptions.scene;
+        job.model = blenderModel;
         job.scale = cyclesUnitScale(mesh);
         job.materials = mesh.materials;
         job.colourTextures = colourTextures;

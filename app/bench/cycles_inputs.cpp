@@ -2,11 +2,19 @@
 
 #include <cmath>
 #include <cstdint>
+#include <algorithm>
+#include <array>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/image_io.h"
 #include "util/constants.h"
@@ -53,6 +61,62 @@ glm::mat3 cyclesEnvironmentFrame(float rotationDegrees) {
     // u = 3/4 in both) -> -y.
     const glm::mat3 axes(glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(-1.0f, 0.0f, 0.0f));
     return axes * unturn;
+}
+
+void writeMeshObj(const MeshData& mesh, const std::filesystem::path& obj) {
+    std::ofstream out(obj);
+    out << std::setprecision(9);  // floats to the last bit
+    const std::filesystem::path mtl = std::filesystem::path(obj).replace_extension(".mtl");
+    out << "mtllib " << mtl.filename().string() << "\n";
+    // Every triangle once, and those of a shared mesh at each placement.
+    std::vector<std::pair<size_t, glm::mat4>> drawn;
+    std::vector<bool> shared(mesh.triangles.size(), false);
+    for (const SharedMesh& s : mesh.sharedMeshes) {
+        for (uint32_t t = s.firstTriangle; t < s.firstTriangle + s.triangleCount; ++t) {
+            shared[t] = true;
+            for (const glm::mat4& placement : s.placements) drawn.emplace_back(t, placement);
+        }
+    }
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!shared[t]) drawn.emplace_back(t, glm::mat4(1.0f));
+    }
+    std::stable_sort(drawn.begin(), drawn.end(), [&](const auto& a, const auto& b) {
+        return mesh.triangleMaterials[a.first] < mesh.triangleMaterials[b.first];
+    });
+    uint32_t material = UINT32_MAX;
+    size_t corner = 1;  // OBJ indices count from 1
+    for (const auto& [t, placement] : drawn) {
+        if (mesh.triangleMaterials[t] != material) {
+            material = mesh.triangleMaterials[t];
+            out << "usemtl " << mesh.materials[material].name << "\n";
+        }
+        const glm::mat3 normalTransform = glm::transpose(glm::inverse(glm::mat3(placement)));
+        // A mirroring placement keeps the front where the transformed normals point (mesh.h):
+        // the corners are reversed so that the winding says so too.
+        const bool mirrored = glm::determinant(glm::mat3(placement)) < 0.0f;
+        const auto& v = mesh.triangles[t];
+        std::array<glm::vec3, 3> p;
+        for (int k = 0; k < 3; ++k) p[k] = glm::vec3(placement * glm::vec4(mesh.positions[v[k]], 1.0f));
+        const bool smooth = !mesh.triangleNormals.empty() && mesh.triangleNormals[t] != kNoNormals;
+        const glm::vec3 flat = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0])) * (mirrored ? -1.0f : 1.0f);
+        const auto uv = cornerUvs(mesh, t);
+        const std::array<int, 3> order = mirrored ? std::array<int, 3>{0, 2, 1} : std::array<int, 3>{0, 1, 2};
+        for (int k : order) {
+            const glm::vec3 n =
+                smooth ? glm::normalize(normalTransform * mesh.normals[mesh.triangleNormals[t][k]]) : flat;
+            out << "v " << p[k].x << " " << p[k].y << " " << p[k].z << "\nvn " << n.x << " " << n.y << " " << n.z
+                << "\nvt " << uv[k].x << " " << uv[k].y << "\n";
+        }
+        out << "f";
+        for (int k = 0; k < 3; ++k) out << " " << corner + k << "/" << corner + k << "/" << corner + k;
+        out << "\n";
+        corner += 3;
+    }
+    std::ofstream materials(mtl);
+    for (const Material& m : mesh.materials) {
+        materials << "newmtl " << m.name << "\nKd " << m.diffuse.x << " " << m.diffuse.y << " " << m.diffuse.z << "\n";
+    }
+    if (!out || !materials) throw Error(obj.string() + ": cannot write");
 }
 
 void writeWhiteMetalGlb(const std::filesystem::path& glb, const std::filesystem::path& out, float roughness) {

@@ -16,7 +16,7 @@ constexpr std::string_view kSecondsLabel = "cycles render seconds: ";
 // Every setting below is one that made Cycles' image differ from Strata's, or is a factory
 // default that biases Cycles (clamping, glossy blur, light threshold, denoising, adaptive
 // sampling, a wide pixel filter, bounce caps per kind).
-constexpr std::string_view kScript = R"python(# Renders an OBJ or glTF scene with Blender's Cycles as Strata renders it (strata bench --vs-cycles).
+constexpr std::string_view kScript = R"python(# Renders an OBJ scene with Blender's Cycles as Strata renders it (strata bench --vs-cycles).
 # blender -b --factory-startup --python-exit-code 1 --python cycles_render.py -- PARAMETERS.json
 import json
 import math
@@ -38,17 +38,8 @@ scene = bpy.context.scene
 # Cycles 3.4 samples triangle lights by solid angle with an approximate acos that makes small ones
 # too dark in a scene measured in millimetres; radiance does not depend on scale, so the scene is
 # made unit size (the camera below too).
-if params["model"].lower().endswith((".glb", ".gltf")):
-    # The glTF importer turns glTF's +Y up into Blender's +Z up, (x, y, z) -> (x, -z, y); the
-    # scene's roots are turned back so that Strata's coordinates (and camera) hold.
-    bpy.ops.import_scene.gltf(filepath=params["model"], import_shading='NORMALS', merge_vertices=False)
-    back = Matrix(((scale, 0.0, 0.0, 0.0), (0.0, 0.0, scale, 0.0), (0.0, -scale, 0.0, 0.0),
-                   (0.0, 0.0, 0.0, 1.0)))
-    for root in [o for o in scene.objects if o.parent is None]:
-        root.matrix_world = back @ root.matrix_world
-else:
-    # The importer turns OBJ (x, y, z) into (x, -z, y) by default; these axes keep them as they are.
-    bpy.ops.wm.obj_import(filepath=params["model"], forward_axis='Y', up_axis='Z', global_scale=scale)
+# The importer turns OBJ (x, y, z) into (x, -z, y) by default; these axes keep them as they are.
+bpy.ops.wm.obj_import(filepath=params["model"], forward_axis='Y', up_axis='Z', global_scale=scale)
 
 
 def linear_image(path):
@@ -118,9 +109,9 @@ for material in bpy.data.materials:
     surface(material, materials[name])
 
 # A uniform sky of radiance `sky` (Strata's --env-color), or black, or a latitude-longitude map
-# looked up along `frame` times the ray's direction (the rotation from Strata's map convention to
-# Cycles' equirectangular one), its texels constant as Strata's are; how Cycles samples the world
-# is left at its factory setting (automatic).
+# along the ray's direction, its texels constant as Strata's are (the scene is turned below so
+# that Cycles' convention reads Strata's texel); how Cycles samples the world is left at its
+# factory setting (automatic: an importance map of the image's resolution).
 world = bpy.data.worlds.new("sky")
 world.use_nodes = True
 background = world.node_tree.nodes["Background"]
@@ -128,22 +119,11 @@ background.inputs["Color"].default_value = (*params["sky"], 1.0)
 background.inputs["Strength"].default_value = 1.0
 environment = params["environment"]
 if environment:
-    nodes = world.node_tree.nodes
-    links = world.node_tree.links
-    map_node = nodes.new("ShaderNodeTexEnvironment")
+    map_node = world.node_tree.nodes.new("ShaderNodeTexEnvironment")
     map_node.image = linear_image(environment["file"])
     map_node.interpolation = 'Closest'
     map_node.projection = 'EQUIRECTANGULAR'
-    direction = nodes.new("ShaderNodeTexCoord").outputs["Generated"]  # the world's: the ray direction
-    turned = nodes.new("ShaderNodeCombineXYZ")
-    for axis, row in enumerate(environment["frame"]):
-        dot = nodes.new("ShaderNodeVectorMath")
-        dot.operation = 'DOT_PRODUCT'
-        dot.inputs[1].default_value = row
-        links.new(direction, dot.inputs[0])
-        links.new(dot.outputs["Value"], turned.inputs[axis])
-    links.new(turned.outputs["Vector"], map_node.inputs["Vector"])
-    links.new(map_node.outputs["Color"], background.inputs["Color"])
+    world.node_tree.links.new(map_node.outputs["Color"], background.inputs["Color"])
 scene.world = world
 
 # Strata's pinhole looks from position at look_at, right = forward x up, fov_y the vertical field
@@ -165,6 +145,14 @@ camera.matrix_world = Matrix((
     (right.z, up.z, -forward.z, position.z),
     (0.0, 0.0, 0.0, 1.0)))
 scene.camera = camera
+
+# Under a map, the whole scene, camera included, is turned by `frame`: a rotation, so the image
+# is the same, and Cycles' lookup of a turned direction reads the texel Strata reads along the
+# unturned one.
+if environment:
+    frame = Matrix(environment["frame"]).to_4x4()
+    for root in [o for o in scene.objects if o.parent is None]:
+        root.matrix_world = frame @ root.matrix_world
 
 render = scene.render
 render.engine = 'CYCLES'

@@ -168,3 +168,53 @@ TEST_CASE("cycles inputs: the white-metal glTF is the model with every material 
     std::ofstream(dir / "not.glb") << "{\"asset\": {}}";
     CHECK_THROWS_AS(writeWhiteMetalGlb(dir / "not.glb", dir / "out.glb", 0.3f), Error);
 }
+
+TEST_CASE("cycles inputs: the mesh OBJ holds Strata's world triangles, shared meshes at each placement") {
+    const auto dir = scratchDir("cycles-mesh-obj");
+    MeshData mesh;
+    mesh.materials = {Material{}, Material{}};
+    mesh.materials[0].name = "plain";
+    mesh.materials[0].diffuse = glm::vec3(0.5f);
+    mesh.materials[1].name = "placed";
+    mesh.materials[1].diffuse = glm::vec3(0.25f);
+    // Triangle 0, flat, in world coordinates; triangle 1, smooth, shared: moved up, and mirrored in x.
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+    mesh.triangleMaterials = {0, 1};
+    mesh.normals = {glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f))};
+    mesh.triangleNormals = {kNoNormals, {0, 0, 0}};
+    glm::mat4 up(1.0f);
+    up[3] = glm::vec4(0.0f, 2.0f, 0.0f, 1.0f);
+    glm::mat4 mirror(1.0f);
+    mirror[0][0] = -1.0f;
+    mesh.sharedMeshes = {{1, 1, {up, mirror}}};
+    writeMeshObj(mesh, dir / "mesh.obj");
+
+    const LoadedScene loaded = loadScene(dir / "mesh.obj");
+    const MeshData& read = loaded.scene.mesh();
+    REQUIRE(read.triangles.size() == 3);
+    REQUIRE(read.materials.size() == 2);
+    int placed = 0;
+    for (size_t t = 0; t < read.triangles.size(); ++t) {
+        const auto& v = read.triangles[t];
+        const glm::vec3 a = read.positions[v[0]], b = read.positions[v[1]], c = read.positions[v[2]];
+        const glm::vec3 front = glm::cross(b - a, c - a);
+        const std::string& name = read.materials[read.triangleMaterials[t]].name;
+        if (name == "plain") {
+            CHECK(a + b + c == glm::vec3(1.0f, 1.0f, 0.0f));
+            CHECK(front.z > 0.0f);
+            continue;
+        }
+        ++placed;
+        const glm::vec3 n = read.normals[read.triangleNormals[t][0]];
+        if (a.y == 2.0f) {  // moved up: the normal as it was
+            CHECK(a + b + c == glm::vec3(1.0f, 6.0f, 1.0f));
+            CHECK(n.x == doctest::Approx(mesh.normals[0].x));
+        } else {  // mirrored: the normal's x turned, and the winding reversed so the front follows it
+            CHECK(a + b + c == glm::vec3(-1.0f, 0.0f, 1.0f));
+            CHECK(n.x == doctest::Approx(-mesh.normals[0].x));
+        }
+        CHECK(glm::dot(front, n) > 0.0f);  // the front where the normal points, mirrored or not
+    }
+    CHECK(placed == 2);
+}

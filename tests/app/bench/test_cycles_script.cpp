@@ -89,11 +89,10 @@ TEST_CASE("cycles script: it sets what makes Cycles' image Strata's") {
     for (const char* setting : {
              "read_factory_settings(use_empty=True)",         // no cube, lamp or grey world
              "forward_axis='Y', up_axis='Z'",                 // OBJ axes as they are
-             "root.matrix_world = back @ root.matrix_world",  // glTF axes turned back to Strata's
+             "root.matrix_world = frame @ root.matrix_world", // the scene turned into the map's frame
              "colorspace_settings.name = 'Linear'",           // the EXRs hold linear values
              "interpolation = 'Linear'", "extension = 'REPEAT'",  // Strata's texture lookup
              "interpolation = 'Closest'",                      // Strata's map: constant texels
-             "operation = 'DOT_PRODUCT'",                      // the map's frame
              "distribution = 'GGX'",
              "global_scale=scale",                            // unit size for the light sampler
              "geometry.outputs[\"Backfacing\"]",              // one-sided emission
