@@ -126,7 +126,9 @@ std::string lightingText(const CyclesBenchSettings& settings) {
                (settings.environmentRotation != 0.0f ? cell(" turned %g degrees", settings.environmentRotation)
                                                       : std::string());
     }
-    if (settings.sky) return cell(", under a uniform sky of %g %g %g", settings.sky->x, settings.sky->y, settings.sky->z);
+    if (settings.sky) {
+        return cell(", under a uniform sky of %g %g %g", settings.sky->x, settings.sky->y, settings.sky->z);
+    }
     return "";
 }
 
@@ -140,10 +142,13 @@ CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings) {
                               lightingText(settings) + ")\n\n";
     if (!onPath("blender")) {
         std::fprintf(stderr, "note: --vs-cycles skipped: no blender on PATH (scripts/setup.sh --peers)\n");
-        return {title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n", {}};
+        return {title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n",
+                {}};
     }
     for (const fs::path& file : {settings.scene, settings.environmentMap}) {
-        if (!file.empty() && !fs::is_regular_file(file)) return {title + "Skipped: " + file.string() + " is missing.\n", {}};
+        if (!file.empty() && !fs::is_regular_file(file)) {
+            return {title + "Skipped: " + file.string() + " is missing.\n", {}};
+        }
     }
     const fs::path& out = settings.outDir;
     fs::create_directories(out);
@@ -196,7 +201,8 @@ CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings) {
     // An OBJ goes to Blender as it is; any other format as the triangles Strata loaded.
     fs::path blenderModel = sceneOptions.scene;
     std::string extension = blenderModel.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".obj") {
         blenderModel = out / (blenderModel.stem().string() + "-for-blender.obj");
         writeMeshObj(mesh, blenderModel);

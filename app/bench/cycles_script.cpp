@@ -211,12 +211,13 @@ std::string cyclesParameters(const CyclesJob& job) {
     nlohmann::json materials = nlohmann::json::object();
     for (const Material& m : job.materials) {
         const auto texture = job.colourTextures.find(m.name);
+        const bool textured = texture != job.colourTextures.end();
         materials[m.name] = {
             {"kd", triple(m.diffuse.x, m.diffuse.y, m.diffuse.z)},
             {"ke", triple(m.emission.x, m.emission.y, m.emission.z)},
             {"ks", triple(m.specular.x, m.specular.y, m.specular.z)},
             {"roughness", m.roughness},
-            {"texture", texture == job.colourTextures.end() ? "" : std::filesystem::absolute(texture->second).string()}};
+            {"texture", textured ? std::filesystem::absolute(texture->second).string() : std::string()}};
     }
     nlohmann::json environment = nullptr;
     if (!job.environmentMap.empty()) {
