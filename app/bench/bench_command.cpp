@@ -43,6 +43,7 @@ struct BenchCommand {
     int referenceSpp = 0;
     bool vsEmbree = false;
     bool vsCycles = false;
+    std::vector<std::string> cyclesSceneNames;  // empty: every scene of cyclesScenes()
     bool skipThroughput = false;
     bool skipRealScenes = false;
     bool allowOutsideFiles = false;
@@ -69,6 +70,43 @@ const fs::path kSharedScenes = fs::path("..") / "shared" / "scenes";
 fs::path cornellBox(bool quick) {
     const fs::path shared = kSharedScenes / "cornell" / "scene.obj";
     return (!quick && fs::is_regular_file(shared)) ? shared : bundledScene("cornell");
+}
+
+struct CyclesScene {
+    std::string name;  // for --vs-cycles-scene and the folder vs-cycles-NAME
+    CyclesBenchSettings settings;
+};
+
+// The scenes `--vs-cycles` sets Strata against Cycles on: the Cornell box with every lever, then
+// real models, one kind of input each, with the levers that tell something on them.
+std::vector<CyclesScene> cyclesScenes(bool quick) {
+    const fs::path wuson = kAssimpModels / "OBJ" / "WusonOBJ.obj";
+    const auto scene = [](std::string name, fs::path file, CyclesLevers levers) {
+        CyclesScene s{std::move(name), {}};
+        s.settings.scene = std::move(file);
+        s.settings.levers = levers;
+        return s;
+    };
+    std::vector<CyclesScene> scenes;
+    scenes.push_back(scene("cornell", cornellBox(quick), CyclesLevers::All));
+    // Smooth normals, no material, a uniform sky.
+    scenes.push_back(scene("WusonOBJ", wuson, CyclesLevers::All));
+    scenes.back().settings.sky = glm::vec3(1.0f);
+    // Five JPEG textures times Kd, smooth normals.
+    scenes.push_back(scene("spider", kAssimpModels / "OBJ" / "spider.obj", CyclesLevers::Few));
+    scenes.back().settings.sky = glm::vec3(1.0f);
+    // An HDR map with a small sun.
+    scenes.push_back(scene("WusonOBJ-sun-sky", wuson, CyclesLevers::Few));
+    scenes.back().settings.environmentMap = bundledAssetsDir() / "sky" / "sun-sky.exr";
+    // glTF, GGX: every material white metal (what Cycles' Glossy BSDF matches exactly).
+    scenes.push_back(scene("2CylinderEngine-metal",
+                           kAssimpModels / "glTF2" / "2CylinderEngine-glTF-Binary" / "2CylinderEngine.glb",
+                           CyclesLevers::Few));
+    scenes.back().settings.sky = glm::vec3(1.0f);
+    scenes.back().settings.whiteMetalRoughness = 0.3f;
+    // Hundreds of emissive panels: the light sampler's scene.
+    scenes.push_back(scene("many-lights", bundledAssetsDir() / "many-lights" / "scene.obj", CyclesLevers::Few));
+    return scenes;
 }
 
 // Every FOLDER/*/*.obj, sorted.
@@ -221,25 +259,36 @@ void BenchCommand::run() const {
         }
     }
     if (runs("cycles", !vsCycles)) {
-        CyclesBenchSettings peer;
-        peer.scene = cornellBox(quick);
-        peer.repeats = quick ? 1 : 3;
-        peer.threads = threads;
-        peer.seed = seed;
-        peer.outDir = out;
-        summary += runCyclesComparison(peer);
-        // A real model under a uniform sky, untextured (the script's materials are), in a folder
-        // of its own: its files and cached reference apart from the Cornell box's.
-        const fs::path wuson = kAssimpModels / "OBJ" / "WusonOBJ.obj";
-        if (fs::is_regular_file(wuson)) {
-            peer.scene = wuson;
-            peer.sky = glm::vec3(1.0f);
-            peer.outDir = out / "vs-cycles-WusonOBJ";
-            fs::create_directories(peer.outDir);
-            summary += runCyclesComparison(peer);
-        } else {
-            summary += "\nSkipped Cycles on " + wuson.string() +
-                       ": not installed (apt-get install assimp-testmodels).\n";
+        std::string ratios;
+        for (const CyclesScene& scene : cyclesScenes(quick)) {
+            if (!cyclesSceneNames.empty() && std::find(cyclesSceneNames.begin(), cyclesSceneNames.end(),
+                                                       scene.name) == cyclesSceneNames.end()) {
+                continue;
+            }
+            CyclesBenchSettings peer = scene.settings;
+            peer.repeats = quick ? 1 : 3;
+            peer.threads = threads;
+            peer.seed = seed;
+            // Each real scene in a folder of its own: its files and cached reference apart.
+            peer.outDir = scene.name == "cornell" ? out : out / ("vs-cycles-" + scene.name);
+            if (!fs::is_regular_file(peer.scene)) {
+                summary += "\nSkipped Cycles on " + scene.name + ": " + peer.scene.string() + " is missing" +
+                           (peer.scene.string().starts_with(kAssimpModels.string())
+                                ? " (apt-get install assimp-testmodels).\n"
+                                : ".\n");
+                continue;
+            }
+            const CyclesComparison comparison = runCyclesComparison(peer);
+            summary += comparison.markdown;
+            for (const CyclesRatio& r : comparison.ratios) {
+                ratios += "| " + scene.name + " | " + std::to_string(r.cyclesSpp) + " | " + cell("%.2f", r.sameSpp) +
+                          " | " + (r.equalTime > 0.0 ? cell("%.2f", r.equalTime) : std::string("-")) + " |\n";
+            }
+        }
+        if (!ratios.empty()) {
+            summary += "\n### Against Blender's Cycles: every scene\n\nrelMSE x seconds of Strata's defaults "
+                       "over Cycles' (below 1 favours Strata):\n\n| scene | Cycles spp | same spp | equal time "
+                       "|\n|---|---|---|---|\n" + ratios;
         }
     }
     if (runs("viewer", skipThroughput)) {
@@ -312,8 +361,11 @@ void addBenchCommand(CLI::App& app) {
     sub->add_flag("--vs-embree", command->vsEmbree,
                   "Also race Embree's tutorial pathtracer on ../shared/scenes/cornell_point");
     sub->add_flag("--vs-cycles", command->vsCycles,
-                  "Also set Strata against Blender's Cycles on the Cornell box and assimp's Wuson under a "
-                  "uniform sky (needs blender)");
+                  "Also set Strata against Blender's Cycles on the Cornell box and real models: textured, "
+                  "under an HDR map, glossy glTF (needs blender)");
+    sub->add_option("--vs-cycles-scene", command->cyclesSceneNames,
+                    "Only these scenes of --vs-cycles (repeatable): cornell, WusonOBJ, spider, WusonOBJ-sun-sky, "
+                    "2CylinderEngine-metal, many-lights");
     sub->add_flag("--skip-throughput", command->skipThroughput, "Only the error runs");
     sub->add_flag("--skip-real-scenes", command->skipRealScenes,
                   "Leave out the real scenes (assimp-testmodels: load, BVH build, first image, memory)");

@@ -1,6 +1,7 @@
 #include "bench/bench_cycles.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "bench/bench_process.h"
 #include "bench/bench_race.h"
 #include "bench/cycles_comparison.h"
+#include "bench/cycles_inputs.h"
 #include "bench/cycles_script.h"
 #include "bench/reference_cache.h"
 #include "bench/strata_child.h"
@@ -34,27 +36,47 @@ namespace fs = std::filesystem;
 // references have of its largest checkpoint.
 constexpr int kReferenceSppFactor = 16;
 
-// Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds untextured
-// diffuse materials with one-sided emission (a model without materials keeps Cycles' default
-// surface, Lambertian 0.8 like Strata's), keeps the OBJ's vertex normals, and lights the scene by
-// its emitters or by a uniform sky, nothing else.
-std::string unsupported(const MeshData& mesh, bool sky) {
+// Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds diffuse
+// materials, textured or not (a model without materials keeps Cycles' default surface, Lambertian
+// 0.8 like Strata's), or a GGX lobe without Fresnel, with one-sided emission; keeps the model's
+// vertex normals; and lights the scene by its emitters, a uniform sky or a map, nothing else.
+std::string unsupported(const MeshData& mesh, bool lit) {
     if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return "it has point or directional lights";
     bool emits = false;
     for (const Material& m : mesh.materials) {
-        if (m.specular != glm::vec3(0.0f) || m.transmission > 0.0f || m.clearcoat > 0.0f || m.metallicRoughness) {
-            return "material " + m.name + " is not Lambertian";
+        if (m.transmission > 0.0f || m.clearcoat > 0.0f) return "material " + m.name + " transmits or is coated";
+        // Cycles 3.4's Glossy BSDF has no Fresnel and no diffuse base under it: only Strata's
+        // layered model at Kd 0 and F0 = Ks = 1 (Schlick's F is then 1) is the same BRDF.
+        if (m.specular != glm::vec3(0.0f) && (m.specular != glm::vec3(1.0f) || m.diffuse != glm::vec3(0.0f))) {
+            return "material " + m.name + " is glossy other than a white conductor (Cycles' GGX has no Fresnel)";
         }
-        if (m.hasReflectanceTextures() || m.textures.emission || m.textures.coverage || m.textures.normal) {
-            return "material " + m.name + " is textured";
+        if (m.textures.roughnessMetallic || m.textures.transmission || m.textures.clearcoat ||
+            m.textures.clearcoatRoughness || m.textures.emission || m.textures.coverage || m.textures.normal ||
+            (m.textures.colour && m.specular != glm::vec3(0.0f))) {
+            return "material " + m.name + " has textures other than a diffuse colour";
         }
         emits = emits || m.emission != glm::vec3(0.0f);
     }
     const auto env = mesh.environment.kind;
-    if (!(env == Environment::Kind::None || (env == Environment::Kind::Default && (emits || sky)))) {
+    if (!(env == Environment::Kind::None || (env == Environment::Kind::Default && (emits || lit)))) {
         return "it is lit by an environment of its own";
     }
     return "";
+}
+
+// Each textured material's colour texture, decoded by Strata's texture code, as a linear EXR in
+// `dir` (the materials are numbered: their names need not be file names).
+std::map<std::string, fs::path> writeColourTextures(const MeshData& mesh, const fs::path& dir) {
+    std::map<std::string, fs::path> textures;
+    for (size_t i = 0; i < mesh.materials.size(); ++i) {
+        const Material& m = mesh.materials[i];
+        if (!m.textures.colour) continue;
+        fs::create_directories(dir);
+        const fs::path exr = dir / ("colour-" + std::to_string(i) + ".exr");
+        writeLinearTexture(*m.textures.colour, exr);
+        textures[m.name] = exr;
+    }
+    return textures;
 }
 
 int nearestPassMultiple(int spp) {
@@ -98,33 +120,58 @@ struct StrataRun {
     Entrant entrant;
 };
 
+std::string lightingText(const CyclesBenchSettings& settings) {
+    if (!settings.environmentMap.empty()) {
+        return ", under " + settings.environmentMap.filename().string() +
+               (settings.environmentRotation != 0.0f ? cell(" turned %g degrees", settings.environmentRotation)
+                                                      : std::string());
+    }
+    if (settings.sky) {
+        return cell(", under a uniform sky of %g %g %g", settings.sky->x, settings.sky->y, settings.sky->z);
+    }
+    return "";
+}
+
 }  // namespace
 
-std::string runCyclesComparison(const CyclesBenchSettings& settings) {
+CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings) {
     const std::string title = "\n### Against Blender's Cycles (" + settings.scene.string() +
-                              (settings.sky ? cell(", under a uniform sky of %g %g %g", settings.sky->x,
-                                                   settings.sky->y, settings.sky->z)
-                                            : std::string()) +
-                              ")\n\n";
+                              (settings.whiteMetalRoughness
+                                   ? cell(", every material white metal of roughness %g", *settings.whiteMetalRoughness)
+                                   : std::string()) +
+                              lightingText(settings) + ")\n\n";
     if (!onPath("blender")) {
         std::fprintf(stderr, "note: --vs-cycles skipped: no blender on PATH (scripts/setup.sh --peers)\n");
-        return title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n";
+        return {title + "Skipped: `blender` is not on PATH (Debian package blender; `scripts/setup.sh --peers`).\n",
+                {}};
     }
-    if (!fs::is_regular_file(settings.scene)) {
-        return title + "Skipped: " + settings.scene.string() + " is missing.\n";
+    for (const fs::path& file : {settings.scene, settings.environmentMap}) {
+        if (!file.empty() && !fs::is_regular_file(file)) {
+            return {title + "Skipped: " + file.string() + " is missing.\n", {}};
+        }
     }
+    const fs::path& out = settings.outDir;
+    fs::create_directories(out);
     // What every render of the comparison shares: the scene and its lighting.
     RenderOptions sceneOptions;
     sceneOptions.scene = settings.scene.string();
+    if (settings.whiteMetalRoughness) {
+        const fs::path metal = out / (settings.scene.stem().string() + "-white-metal.glb");
+        writeWhiteMetalGlb(settings.scene, metal, *settings.whiteMetalRoughness);
+        sceneOptions.scene = metal.string();
+    }
     if (settings.sky) sceneOptions.envColor = {settings.sky->x, settings.sky->y, settings.sky->z};
+    if (!settings.environmentMap.empty()) {
+        sceneOptions.env = settings.environmentMap.string();
+        sceneOptions.envRotate = settings.environmentRotation;
+    }
     const LoadedScene loaded = sceneOptions.loadScene();
     const MeshData& mesh = loaded.scene.mesh();
-    if (const std::string why = unsupported(mesh, settings.sky.has_value()); !why.empty()) {
-        return title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n";
+    if (const std::string why = unsupported(mesh, settings.sky || !settings.environmentMap.empty()); !why.empty()) {
+        return {title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n", {}};
     }
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
     const Camera camera(loaded.settings.pose, settings.width, settings.height);
-    const fs::path& out = settings.outDir;
     const auto log = out / "vs-cycles.log";
     std::vector<int> cyclesSpp;
     for (int spp : settings.cyclesSpp) cyclesSpp.push_back(nearestPassMultiple(spp));
@@ -144,18 +191,31 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     const auto referenceFile = referencePath(out / "references", loaded, camera,
                                              reference.renderSettings(loaded.scene).integrator);
     const auto found = findReference(loaded, camera, reference, referenceSettings);
-    if (!found || found->constant) return title + "Skipped: no reference image.\n";
+    if (!found || found->constant) return {title + "Skipped: no reference image.\n", {}};
     const glm::dvec3 referenceMeans = channelMeans(found->image);
 
     const auto script = out / "cycles_render.py";
     writeFile(script, std::string(cyclesScript()));
+    const auto colourTextures = writeColourTextures(mesh, out / "textures");
+    // An OBJ goes to Blender as it is; any other format as the triangles Strata loaded.
+    fs::path blenderModel = sceneOptions.scene;
+    std::string extension = blenderModel.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".obj") {
+        blenderModel = out / (blenderModel.stem().string() + "-for-blender.obj");
+        writeMeshObj(mesh, blenderModel);
+    }
     std::vector<CyclesRun> cycles;
     for (int spp : cyclesSpp) {
         CyclesJob job;
-        job.obj = settings.scene;
+        job.model = blenderModel;
         job.scale = cyclesUnitScale(mesh);
         job.materials = mesh.materials;
+        job.colourTextures = colourTextures;
         job.sky = settings.sky.value_or(glm::vec3(0.0f));
+        job.environmentMap = settings.environmentMap;
+        job.environmentFrame = cyclesEnvironmentFrame(settings.environmentRotation);
         job.pose = camera.pose();
         job.width = settings.width;
         job.height = settings.height;
@@ -184,23 +244,33 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
     // defaults'), the warp of the strata onto the cosine measure too (strata24-cosine-qmc is the
     // same strata and points unwarped); roulette from bounce 2, the setting that trades the most
     // variance for time; and plain BSDF sampling with it.
-    std::vector<StrataConfig> configs = {{defaultsLabel(), {}},
-                                         {"Strata defaults --no-nee", {}},
-                                         {"Strata defaults --roulette-depth -1", {}},
-                                         {"Strata defaults --sampler bsdf (no strata)", {}},
-                                         {"Strata defaults --sampler strata24-cosine-qmc (strata not warped)", {}},
-                                         {"Strata --roulette-depth 2", {}},
-                                         {"Strata --sampler bsdf --roulette-depth 2", {}}};
-    configs[1].options.nee = false;
-    configs[2].options.rouletteDepth = -1;
-    configs[3].options.sampler = "bsdf";
-    configs[4].options.sampler = "strata24-cosine-qmc";
-    configs[5].options.rouletteDepth = 2;
-    configs[6].options.sampler = "bsdf";
-    configs[6].options.rouletteDepth = 2;
+    // On the real scenes: the defaults, plain BSDF sampling, and without next-event estimation
+    // where it samples something (under a uniform sky it draws no shadow ray: the same paths).
+    std::vector<StrataConfig> configs = {{defaultsLabel(), {}}};
+    configs.push_back({"Strata defaults --no-nee", {}});
+    configs.back().options.nee = false;
+    if (settings.levers == CyclesLevers::All) {
+        configs.push_back({"Strata defaults --roulette-depth -1", {}});
+        configs.back().options.rouletteDepth = -1;
+    }
+    configs.push_back({"Strata defaults --sampler bsdf (no strata)", {}});
+    configs.back().options.sampler = "bsdf";
+    if (settings.levers == CyclesLevers::All) {
+        configs.push_back({"Strata defaults --sampler strata24-cosine-qmc (strata not warped)", {}});
+        configs.back().options.sampler = "strata24-cosine-qmc";
+        configs.push_back({"Strata --roulette-depth 2", {}});
+        configs.back().options.rouletteDepth = 2;
+        configs.push_back({"Strata --sampler bsdf --roulette-depth 2", {}});
+        configs.back().options.sampler = "bsdf";
+        configs.back().options.rouletteDepth = 2;
+    } else if (settings.sky) {
+        configs.erase(configs.begin() + 1);
+    }
     for (StrataConfig& config : configs) {
         config.options.scene = sceneOptions.scene;
         config.options.envColor = sceneOptions.envColor;
+        config.options.env = sceneOptions.env;
+        config.options.envRotate = sceneOptions.envRotate;
         config.options.width = settings.width;
         config.options.height = settings.height;
         config.options.depth = settings.depth;
@@ -223,7 +293,7 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         return failed;
     };
     const auto failure = [&](const std::string& name) {
-        return title + "Skipped: `" + name + "` failed (see " + log.string() + ").\n";
+        return CyclesComparison{title + "Skipped: `" + name + "` failed (see " + log.string() + ").\n", {}};
     };
 
     // First the same spp as Cycles, which also measures each configuration's start-up and cost
@@ -267,17 +337,25 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         return std::pair{measure(rendered, *found).relMse, channelMeans(rendered) / referenceMeans};
     };
     std::vector<CyclesRow> rows;
+    std::vector<CyclesRatio> ratios;
     for (const CyclesRun& c : cycles) {
         const auto [relMse, means] = measured(c.image);
+        const double cyclesCost = relMse * median(*c.renderSeconds);
         rows.push_back({kCyclesRenderer, "", c.spp, c.spp, relMse, median(*c.renderSeconds), means});
+        CyclesRatio ratio{c.spp, 0.0, 0.0};
         for (size_t k = 0; k < configs.size(); ++k) {
             for (const StrataRun& s : strata) {
                 if (s.config != k || s.cyclesSpp != c.spp) continue;
                 const auto [strataRelMse, strataMeans] = measured(s.image);
                 rows.push_back({configs[k].label, s.match, c.spp, s.spp, strataRelMse, s.entrant.medianWall(),
                                 strataMeans});
+                if (k != 0) continue;
+                const double cost = strataRelMse * s.entrant.medianWall() / cyclesCost;
+                if (s.match.find("same spp") != std::string::npos) ratio.sameSpp = cost;
+                if (s.match.find("equal time") != std::string::npos) ratio.equalTime = cost;
             }
         }
+        ratios.push_back(ratio);
     }
 
     const Table table = cyclesComparisonTable(rows);
@@ -288,11 +366,11 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
         writeFile(out / file, csv);
         series.push_back({renderer, file});
     }
-    const std::string plotTitle = sceneName(settings.scene) + (settings.sky ? " under a uniform sky" : "") +
+    const std::string plotTitle = sceneName(settings.scene) + lightingText(settings) +
                                   cell(", %dx%d, depth %d, ", settings.width, settings.height, settings.depth) +
                                   threadsText(threads);
     runGnuplot(out, "vs-cycles", cyclesPlotScript(series, "vs-cycles.png", plotTitle));
-    return title +
+    return {title +
            cell("%dx%d, depth %d (Cycles max_bounces %d), %s, medians of %d alternated runs. Seconds: "
                 "`strata render` as a whole process (start-up, loading, BVH build, render, writing); "
                 "Cycles' `bpy.ops.render.render()` alone, timed inside Blender (its start-up, scene "
@@ -309,8 +387,10 @@ std::string runCyclesComparison(const CyclesBenchSettings& settings) {
            "line through each configuration's two same-spp times. Cycles' settings: no adaptive "
            "sampling, denoising, clamping, glossy blur or light threshold, one bounce cap for every "
            "kind, a 1-pixel box filter, one-sided emission, the OBJ's vertex normals, the scene "
-           "scaled to unit size "
-           "(script: " + script.string() + "; plot: " + (out / "vs-cycles.png").string() + ").\n";
+           "scaled to unit size; textures decoded by Strata into linear EXRs, bilinear and repeating; "
+           "a map looked up through the rotation to Strata's convention, texels constant "
+           "(script: " + script.string() + "; plot: " + (out / "vs-cycles.png").string() + ").\n",
+            ratios};
 }
 
 }  // namespace strata

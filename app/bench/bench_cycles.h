@@ -13,13 +13,25 @@
 
 namespace strata {
 
+// Which Strata settings race Cycles: every lever of the defaults turned off alone, or (on the
+// real scenes, to keep their run short) the defaults, plain BSDF sampling and, where something
+// lights the scene that next-event estimation samples (emitters, a map), the defaults without it.
+enum class CyclesLevers { All, Few };
+
 struct CyclesBenchSettings {
-    // A Lambertian OBJ, lit by its emitting triangles or by `sky`, seen by its JSON camera or the
-    // default view.
+    // An OBJ (Lambertian, textured by map_Kd or not) or glTF model, lit by its emitting triangles,
+    // by `sky` or by `environmentMap`, seen by its JSON camera or the default view.
     std::filesystem::path scene;
     // A uniform environment of this radiance (Strata's --env-color, Cycles' world colour); none:
     // the scene's own lights, the world black.
     std::optional<glm::vec3> sky;
+    // A latitude-longitude EXR (Strata's --env, turned by --env-rotate) instead.
+    std::filesystem::path environmentMap;
+    float environmentRotation = 0.0f;
+    // For a binary glTF: render a copy whose materials are all white metal of this roughness
+    // (writeWhiteMetalGlb), the part of glTF's model Cycles' Glossy BSDF computes exactly.
+    std::optional<float> whiteMetalRoughness;
+    CyclesLevers levers = CyclesLevers::All;
     int depth = 9;                // Strata's K; Cycles' max_bounces K - 1
     int width = 256;
     int height = 256;
@@ -30,8 +42,20 @@ struct CyclesBenchSettings {
     std::filesystem::path outDir;
 };
 
-// The markdown section for the summary, or a one-line note why it could not run (no `blender`
-// on PATH, a scene Cycles cannot be given as Strata sees it, a failed run).
-std::string runCyclesComparison(const CyclesBenchSettings& settings);
+// The relMSE x seconds ratio of Strata's defaults to Cycles' at one Cycles budget.
+struct CyclesRatio {
+    int cyclesSpp = 0;
+    double sameSpp = 0.0;
+    double equalTime = 0.0;  // the same-spp ratio when that run also took Cycles' time
+};
+
+struct CyclesComparison {
+    // The markdown section for the summary, or a one-line note why it could not run (no
+    // `blender` on PATH, a scene Cycles cannot be given as Strata sees it, a failed run).
+    std::string markdown;
+    std::vector<CyclesRatio> ratios;  // empty when it did not run
+};
+
+CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings);
 
 }  // namespace strata

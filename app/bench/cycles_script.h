@@ -6,10 +6,12 @@
 // script always speaks the parameters this program writes.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+#include <glm/mat3x3.hpp>
 
 #include "materials/material.h"
 #include "scene/camera.h"
@@ -18,11 +20,19 @@
 namespace strata {
 
 struct CyclesJob {
-    std::filesystem::path obj;
+    std::filesystem::path model;  // OBJ, or glTF (.gltf, .glb)
     // Blender scales the scene and camera by this inside (cyclesUnitScale); radiance is scale-free.
     double scale = 1.0;
-    std::vector<Material> materials;  // found by name in the OBJ's MTL
+    // Found by name in the model's; diffuse Kd (times its texture), or GGX Ks at roughness Pr
+    // when Ks is not zero; Ke on the front side.
+    std::vector<Material> materials;
+    // Each textured material's colour texture as a linear float EXR (writeLinearTexture).
+    std::map<std::string, std::filesystem::path> colourTextures;
     glm::vec3 sky{0.0f};              // the world's uniform radiance (black: the emitters alone)
+    // A latitude-longitude map (linear float EXR) in place of `sky` when not empty, looked up by
+    // Cycles along environmentFrame times the direction (cyclesEnvironmentFrame).
+    std::filesystem::path environmentMap;
+    glm::mat3 environmentFrame{1.0f};
     CameraPose pose;
     int width = 256;
     int height = 256;

@@ -16,7 +16,7 @@ using namespace strata;
 namespace {
 CyclesJob cornellJob() {
     CyclesJob job;
-    job.obj = "scene.obj";
+    job.model = "scene.obj";
     job.scale = 1.0 / 559.2;
     job.materials = {{"white", {0.725f, 0.71f, 0.68f}, {0.0f, 0.0f, 0.0f}, {}, 1.0f},
                      {"light", {0.0f, 0.0f, 0.0f}, {17.0f, 12.0f, 4.0f}, {}, 1.0f}};
@@ -32,7 +32,7 @@ CyclesJob cornellJob() {
 
 TEST_CASE("cycles script: the parameters hold the job, by the names the script reads") {
     const auto parameters = nlohmann::json::parse(cyclesParameters(cornellJob()));
-    CHECK(parameters["obj"] == std::filesystem::absolute("scene.obj").string());
+    CHECK(parameters["model"] == std::filesystem::absolute("scene.obj").string());
     CHECK(parameters["out"] == std::filesystem::absolute("out.exr").string());
     CHECK(parameters["scale"].get<double>() == doctest::Approx(1.0 / 559.2));
     CHECK(parameters["materials"]["light"]["ke"][0].get<double>() == doctest::Approx(17.0));
@@ -49,6 +49,28 @@ TEST_CASE("cycles script: the parameters hold the job, by the names the script r
     CyclesJob underSky = cornellJob();
     underSky.sky = {0.5f, 1.0f, 2.0f};
     CHECK(nlohmann::json::parse(cyclesParameters(underSky))["sky"] == nlohmann::json::array({0.5, 1.0, 2.0}));
+    CHECK(parameters["environment"].is_null());
+    CHECK(parameters["materials"]["white"]["texture"] == "");
+    CHECK(parameters["materials"]["white"]["ks"] == nlohmann::json::array({0.0, 0.0, 0.0}));
+
+    // A textured material names its linear EXR; a glossy one its Ks and roughness; a map its file
+    // and the frame's rows (the frame applied to a direction is row . direction).
+    CyclesJob real = cornellJob();
+    real.colourTextures["white"] = "colour-0.exr";
+    real.materials[0].specular = glm::vec3(1.0f);
+    real.materials[0].roughness = 0.3f;
+    real.environmentMap = "sky.exr";
+    real.environmentFrame = glm::mat3(glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f),
+                                      glm::vec3(-1.0f, 0.0f, 0.0f));  // columns
+    const auto realParameters = nlohmann::json::parse(cyclesParameters(real));
+    CHECK(realParameters["materials"]["white"]["texture"] == std::filesystem::absolute("colour-0.exr").string());
+    CHECK(realParameters["materials"]["light"]["texture"] == "");
+    CHECK(realParameters["materials"]["white"]["ks"] == nlohmann::json::array({1.0, 1.0, 1.0}));
+    CHECK(realParameters["materials"]["white"]["roughness"].get<double>() == doctest::Approx(0.3));
+    CHECK(realParameters["environment"]["file"] == std::filesystem::absolute("sky.exr").string());
+    CHECK(realParameters["environment"]["frame"][0] == nlohmann::json::array({0.0, 0.0, -1.0}));
+    CHECK(realParameters["environment"]["frame"][1] == nlohmann::json::array({-1.0, 0.0, 0.0}));
+    CHECK(realParameters["environment"]["frame"][2] == nlohmann::json::array({0.0, 1.0, 0.0}));
 
     // Every parameter is read by the script, and the script reads no other.
     const std::string script(cyclesScript());
@@ -67,6 +89,11 @@ TEST_CASE("cycles script: it sets what makes Cycles' image Strata's") {
     for (const char* setting : {
              "read_factory_settings(use_empty=True)",         // no cube, lamp or grey world
              "forward_axis='Y', up_axis='Z'",                 // OBJ axes as they are
+             "root.matrix_world = frame @ root.matrix_world", // the scene turned into the map's frame
+             "colorspace_settings.name = 'Linear'",           // the EXRs hold linear values
+             "interpolation = 'Linear'", "extension = 'REPEAT'",  // Strata's texture lookup
+             "interpolation = 'Closest'",                      // Strata's map: constant texels
+             "distribution = 'GGX'",
              "global_scale=scale",                            // unit size for the light sampler
              "geometry.outputs[\"Backfacing\"]",              // one-sided emission
              "scene.world = world",                           // black, or the job's sky
