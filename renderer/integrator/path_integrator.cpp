@@ -81,8 +81,9 @@ bool onLobeSide(const SurfaceHit& surface, const glm::vec3& direction, BsdfFlags
 // The numbers of a BSDF's lobe choice and of its lobes other than the diffuse one, which a
 // Lambertian surface does not read: drawn out of line, as segmentBetween is.
 [[gnu::noinline]] void addLobeNumbers(BsdfNumbers& numbers, const PathSamples& samples, int bounce) {
-    numbers.lobePoint = samples.bouncePoint(bounce);
-    numbers.lobeChoice = samples.lobeChoice(bounce);
+    const glm::vec3 lobe = samples.lobeSample(bounce);
+    numbers.lobeChoice = lobe.x;
+    numbers.lobePoint = {lobe.y, lobe.z};
 }
 
 // Russian roulette's survival probability for a path of weight `weight` (the 1/survival of

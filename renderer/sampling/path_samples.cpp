@@ -96,9 +96,13 @@ PathSamples::StratumPoint PathSamples::stratumSequencePoint(int bounce) const {
     return {id, unitPoint(shared.point ^ glm::uvec2(static_cast<uint32_t>(shift), static_cast<uint32_t>(shift >> 32)))};
 }
 
-float PathSamples::lobeChoice(int bounce) const {
-    return (cached(bounce) ? streams_->lobe(bounce) : SobolStream(PixelStreams::streamKey(keys_.lobe, bounce)))
-        .value(pixelIndex_);
+SobolStream PathSamples::lobeStream(int bounce) const {
+    return cached(bounce) ? streams_->lobe(bounce) : SobolStream(PixelStreams::streamKey(keys_.lobe, bounce));
+}
+
+glm::vec3 PathSamples::lobeSample(int bounce) const {
+    const glm::vec3 p = lobeStream(bounce).point3(pixelIndex_);
+    return {p.z, p.x, p.y};
 }
 
 float PathSamples::roulette(int bounce) const {

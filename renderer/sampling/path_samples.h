@@ -3,7 +3,7 @@
 // a pure function of (seed, pixel, pass, step, bounce, dimension), which is what makes renders
 // bit-identical for any thread count.
 //
-// The pixel jitter, the light sample, the lobe choice and the roulette decision are stratified
+// The pixel jitter, the light sample, the lobe sample and the roulette decision are stratified
 // over the pixel's paths: the pixel's path number n = 24 pass + step indexes a low-discrepancy
 // stream (sobol.h) of its own for each of these values at each bounce, Owen-scrambled with seeds
 // from (seed, pixel, value, bounce), and index-shuffled too, so that two streams pair their points
@@ -126,9 +126,13 @@ public:
     StratumPoint stratumSequencePoint(int bounce) const;
     // The stratum this path takes at `bounce` (stratum_schedule.h).
     int stratum(int bounce) const;
-    // Uniform on [0,1): which lobe of a layered material sample() takes at `bounce`;
-    // a scrambled van der Corput sequence over the pixel.
-    float lobeChoice(int bounce) const;
+    // A lobe sample at `bounce`: x which lobe of a layered material sample() takes, (y, z) the
+    // point in [0,1)^2 that a lobe other than the diffuse one (GGX visible normals, a
+    // dielectric's microfacet) maps to its direction. Laid out as the light sample is: the point
+    // the stream's (0,2)-sequence pair, the choice its third coordinate, so that the point is
+    // stratified over the pixel's paths and, jointly a (1,3)-sequence, within each lobe's share
+    // of the choices.
+    glm::vec3 lobeSample(int bounce) const;
     // Uniform on [0,1): whether Russian roulette lets the path go on after `bounce`; likewise.
     float roulette(int bounce) const;
     // Next-event estimation at `bounce`: x picks the emitting triangle, (y, z) the point on it;
@@ -148,6 +152,7 @@ private:
     glm::vec2 point(uint64_t dimension) const;
     bool cached(int bounce) const { return streams_ && bounce < streams_->cachedBounces(); }
     SobolStream lightStream(int bounce) const;
+    SobolStream lobeStream(int bounce) const;
 
     PixelKeys keys_;
     const PixelStreams* streams_;  // the pixel's shared streams, or none

@@ -148,8 +148,8 @@ TEST_CASE("direction sampler: the reported density is the marginal density of th
         int diffuseSamples = 0;
         for (int step = 0; step < 24; ++step) {
             const PathSamples samples(9, 4, 2, step);
-            const BsdfNumbers numbers{diffuseNumbers(kind, samples, 0), samples.bouncePoint(0),
-                                      samples.lobeChoice(0)};
+            const glm::vec3 lobe = samples.lobeSample(0);
+            const BsdfNumbers numbers{diffuseNumbers(kind, samples, 0), {lobe.y, lobe.z}, lobe.x};
             const auto s = bsdf.sample(wo, numbers);
             if (!s) continue;
             INFO(samplerName(kind));

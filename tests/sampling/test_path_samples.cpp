@@ -1,4 +1,4 @@
-// The per-pixel low-discrepancy values of path_samples.h (pixel jitter, light sample, lobe choice,
+// The per-pixel low-discrepancy values of path_samples.h (pixel jitter, light sample, lobe sample,
 // roulette): each one uniform (so every path is unbiased), each one stratified over a pixel's
 // first 2^m paths, and no two of them correlated.
 #include <doctest/doctest.h>
@@ -35,7 +35,9 @@ std::vector<Value> streamValues() {
         values.push_back({"light choice" + at, [bounce](const PathSamples& s) { return s.lightSample(bounce).x; }});
         values.push_back({"light point x" + at, [bounce](const PathSamples& s) { return s.lightSample(bounce).y; }});
         values.push_back({"light point y" + at, [bounce](const PathSamples& s) { return s.lightSample(bounce).z; }});
-        values.push_back({"lobe" + at, [bounce](const PathSamples& s) { return s.lobeChoice(bounce); }});
+        values.push_back({"lobe choice" + at, [bounce](const PathSamples& s) { return s.lobeSample(bounce).x; }});
+        values.push_back({"lobe point x" + at, [bounce](const PathSamples& s) { return s.lobeSample(bounce).y; }});
+        values.push_back({"lobe point y" + at, [bounce](const PathSamples& s) { return s.lobeSample(bounce).z; }});
         values.push_back({"roulette" + at, [bounce](const PathSamples& s) { return s.roulette(bounce); }});
     }
     return values;
@@ -109,7 +111,8 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
             std::vector<std::array<double, 2>> jitter;
             std::vector<std::array<double, 2>> lightPoint;
             std::vector<std::array<double, 3>> light;
-            std::vector<std::array<double, 1>> lobe;
+            std::vector<std::array<double, 2>> lobePoint;
+            std::vector<std::array<double, 3>> lobe;
             std::vector<std::array<double, 1>> roulette;
             for (uint32_t n = 0; n < (1u << m); ++n) {
                 const PathSamples s = pathNumber(3, pixel, n);
@@ -119,7 +122,9 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
                 // A single light's point alone is the same point, bit for bit.
                 CHECK(s.lightPoint(2) == glm::vec2(l.y, l.z));
                 light.push_back({l.x, l.y, l.z});
-                lobe.push_back({s.lobeChoice(2)});
+                const glm::vec3 b = s.lobeSample(2);
+                lobePoint.push_back({b.y, b.z});
+                lobe.push_back({b.x, b.y, b.z});
                 roulette.push_back({s.roulette(2)});
             }
             INFO("pixel " << pixel << ", m " << m);
@@ -127,7 +132,8 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
             CHECK(isNet<2>(lightPoint, m, 0));
             // The choice with the point: Sobol's first three dimensions have t = 1.
             CHECK(isNet<3>(light, m, 1));
-            CHECK(isNet<1>(lobe, m, 0));
+            CHECK(isNet<2>(lobePoint, m, 0));
+            CHECK(isNet<3>(lobe, m, 1));
             CHECK(isNet<1>(roulette, m, 0));
         }
     }
@@ -208,7 +214,7 @@ TEST_CASE("path samples: from a pixel's shared streams they are the per-path num
                     INFO("pixel " << pixel << ", pass " << pass << ", step " << step << ", bounce " << bounce);
                     CHECK(fromShared.lightSample(bounce) == alone.lightSample(bounce));
                     CHECK(fromShared.lightPoint(bounce) == alone.lightPoint(bounce));
-                    CHECK(fromShared.lobeChoice(bounce) == alone.lobeChoice(bounce));
+                    CHECK(fromShared.lobeSample(bounce) == alone.lobeSample(bounce));
                     CHECK(fromShared.roulette(bounce) == alone.roulette(bounce));
                     CHECK(fromShared.bouncePoint(bounce) == alone.bouncePoint(bounce));
                     CHECK(fromShared.stratum(bounce) == alone.stratum(bounce));
