@@ -46,7 +46,7 @@ std::vector<double> sampledPowersOf(const std::vector<std::unique_ptr<Light>>& l
 }  // namespace
 
 SceneLights::SceneLights(const LightDescriptions& descriptions)
-    : sceneRadius_(descriptions.sceneRadius), triangleLight_(descriptions.triangles, -1), sampler_({}) {
+    : sceneRadius_(descriptions.sceneRadius), triangleLight_(descriptions.triangles, -1), sampler_({}), tree_({}) {
     for (const EmittingTriangle& emitter : descriptions.emitters) {
         const Material& material = *emitter.material;
         const auto& [p0, p1, p2] = emitter.corners;
@@ -74,7 +74,42 @@ void SceneLights::setEnvironment(const Environment& given) {
     litByDefault_ = given.kind == Environment::Kind::Default && environment_.kind != Environment::Kind::None;
     if (auto light = makeEnvironmentLight(environment_, sceneRadius_)) atInfinity_.push_back(add(std::move(light)));
     sampler_ = LightSampler(sampledPowersOf(lights_));
+    tree_ = LightTree(lights_);
 }
+
+// The tree costs at every choice a walk of its depth, two importance estimates per step, against
+// the power sampler's one lookup; it pays where a point's few nearby or facing emitters are a
+// small part of many. Measured (docs/method.md, next-event estimation): on the bundled Cornell
+// box (2 emitting triangles, one panel) the tree gains nothing and costs its walk; on the
+// many-light room (assets/many-lights) it wins by a large factor.
+constexpr size_t kAutoTreeLights = 8;
+
+bool SceneLights::usesTree(LightSamplerKind kind) const {
+    switch (kind) {
+        case LightSamplerKind::Power: return false;
+        case LightSamplerKind::Tree: return true;
+        case LightSamplerKind::Auto: break;
+    }
+    return tree_.treeLights() >= kAutoTreeLights;
+}
+
+std::string_view lightSamplerName(LightSamplerKind kind) {
+    switch (kind) {
+        case LightSamplerKind::Power: return "power";
+        case LightSamplerKind::Tree: return "tree";
+        case LightSamplerKind::Auto: break;
+    }
+    return "auto";
+}
+
+std::optional<LightSamplerKind> parseLightSamplerKind(std::string_view name) {
+    for (LightSamplerKind kind : {LightSamplerKind::Power, LightSamplerKind::Tree, LightSamplerKind::Auto}) {
+        if (name == lightSamplerName(kind)) return kind;
+    }
+    return std::nullopt;
+}
+
+std::string lightSamplerNames() { return "power|tree|auto"; }
 
 std::string_view SceneLights::defaultSkyReason() const {
     if (!litByDefault_) return {};
