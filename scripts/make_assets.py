@@ -20,7 +20,7 @@ tests/data/cornell_point/  The Cornell box's room and blocks without the area li
           point light just under the ceiling's centre (in its description, W/sr in mm units): the
           Cornell light's colour, about the irradiance that light gives the floor below it. A scene
           whose light has no radiance bound (K_eps) and that only next-event estimation lights.
-many-lights/  A closed room (units: mm, 1000 wide, 500 high, 1400 deep) of Lambertian walls and
+many-lights/  A closed room (units: mm, 2400 wide, 600 high, 4000 deep) of Lambertian walls and
           floor with four boxes standing on it, lit by 300 small one-sided panels facing into the
           room (a 12 x 16 grid over the ceiling, two rows along each side wall's upper band, a row
           on the back and on the front wall), their radiance log-uniform over two orders of
@@ -296,7 +296,8 @@ def glossy():
 def many_lights():
     import random
     rng = random.Random(20261204)
-    width, height, depth = 1000.0, 500.0, 1400.0
+    width, height, depth = 2400.0, 600.0, 4000.0
+    sx, sy, sz = width / 1000, height / 500, depth / 1400  # the boxes' layout, drawn for 1000 x 500 x 1400
     inside = [width / 2, height / 2, depth / 2]
     room = {
         "floor": ("floor", [[0, 0, 0], [width, 0, 0], [width, 0, depth], [0, 0, depth]]),
@@ -311,6 +312,7 @@ def many_lights():
              [[620, 140, 420], [840, 140, 380], [880, 140, 600], [660, 140, 640]],
              [[300, 380, 900], [520, 380, 900], [520, 380, 1080], [300, 380, 1080]],
              [[700, 200, 1000], [900, 200, 1000], [900, 200, 1250], [700, 200, 1250]]]
+    boxes = [[[x * sx, y * sy, z * sz] for x, y, z in top] for top in boxes]
     groups += [(f"box_{i}", "box", block(top)) for i, top in enumerate(boxes)]
     inset = 0.8  # off the surface behind, as the Cornell light is
     panels = []  # (corners, facing direction)
@@ -318,10 +320,10 @@ def many_lights():
         for k in range(16):
             x, z = (i + 0.5) * width / 12, (k + 0.5) * depth / 16
             y = height - inset
-            panels.append(([[x - 25, y, z - 25], [x + 25, y, z - 25], [x + 25, y, z + 25], [x - 25, y, z + 25]],
+            panels.append(([[x - 40, y, z - 40], [x + 40, y, z - 40], [x + 40, y, z + 40], [x - 40, y, z + 40]],
                            [0, -1, 0]))
     for wall_x, inward in [(inset, 1), (width - inset, -1)]:
-        for y in (400.0, 460.0):
+        for y in (height - 120, height - 50):
             for k in range(20):
                 z = (k + 0.5) * depth / 20
                 panels.append(([[wall_x, y - 15, z - 20], [wall_x, y - 15, z + 20], [wall_x, y + 15, z + 20],
@@ -329,8 +331,8 @@ def many_lights():
     for wall_z, inward in [(depth - inset, -1), (inset, 1)]:
         for i in range(14):
             x = (i + 0.5) * width / 14
-            panels.append(([[x - 20, 440, wall_z], [x + 20, 440, wall_z], [x + 20, 470, wall_z],
-                            [x - 20, 470, wall_z]], [0, 0, inward]))
+            panels.append(([[x - 30, height - 80, wall_z], [x + 30, height - 80, wall_z],
+                            [x + 30, height - 40, wall_z], [x - 30, height - 40, wall_z]], [0, 0, inward]))
     tints = [[1.0, 0.55, 0.2], [0.35, 0.6, 1.0], [1.0, 0.3, 0.6], [0.4, 1.0, 0.45]]
     materials = [("floor", [("Kd", [0.55, 0.52, 0.48])]), ("wall", [("Kd", [0.75, 0.75, 0.73])]),
                  ("blue", [("Kd", [0.35, 0.45, 0.65])]), ("ochre", [("Kd", [0.7, 0.55, 0.3])]),
@@ -341,11 +343,11 @@ def many_lights():
         name = f"panel_{n:03d}"
         groups.append((name, name, [facing(corners, towards)]))
         materials.append((name, [("Kd", [0.8, 0.8, 0.8]), ("Ke", [radiance * c for c in colour])]))
-    large = [("glow_left", [[inset, 60, 300], [inset, 60, 800], [inset, 260, 800], [inset, 260, 300]], [1, 0, 0]),
-             ("glow_right", [[width - inset, 60, 700], [width - inset, 60, 1200], [width - inset, 260, 1200],
-                             [width - inset, 260, 700]], [-1, 0, 0]),
-             ("glow_back", [[250, 80, depth - inset], [750, 80, depth - inset], [750, 220, depth - inset],
-                            [250, 220, depth - inset]], [0, 0, -1])]
+    large = [("glow_left", [[inset, 60, 800], [inset, 60, 2000], [inset, 300, 2000], [inset, 300, 800]], [1, 0, 0]),
+             ("glow_right", [[width - inset, 60, 2000], [width - inset, 60, 3400], [width - inset, 300, 3400],
+                             [width - inset, 300, 2000]], [-1, 0, 0]),
+             ("glow_back", [[700, 80, depth - inset], [1700, 80, depth - inset], [1700, 300, depth - inset],
+                            [700, 300, depth - inset]], [0, 0, -1])]
     for name, corners, towards in large:
         groups.append((name, "glow", [facing(corners, towards)]))
     materials.append(("glow", [("Kd", [0.8, 0.8, 0.8]), ("Ke", [0.3, 0.32, 0.36])]))
@@ -358,7 +360,7 @@ def many_lights():
               ["Panels: Ke = radiance, log-uniform in 0.2..20, some tinted; the glow panels are dim."],
               materials)
     write_json("assets/many-lights/many-lights.json",
-               {"position": [500, 300, 40], "look_at": [500, 170, 1400], "up": [0, 1, 0],
+               {"position": [width / 2, 0.55 * height, 40], "look_at": [width / 2, 0.3 * height, depth], "up": [0, 1, 0],
                 "fov_y": 62, "width": 480, "height": 320})
 
 

@@ -63,28 +63,34 @@ LightBounds unite(const LightBounds& a, const LightBounds& b) {
     return united;
 }
 
-float importance(const LightBounds& bounds, const glm::vec3& point, const glm::vec3& normal) {
+ImportanceBounds importanceBounds(const LightBounds& bounds) {
+    const glm::vec3 diagonal = bounds.upper - bounds.lower;
+    return {bounds.centre(),  0.5f * glm::length(diagonal),
+            bounds.axis,      bounds.power,
+            bounds.cosSpread, safeSqrt(1.0f - bounds.cosSpread * bounds.cosSpread),
+            bounds.cosEmission};
+}
+
+float importance(const ImportanceBounds& bounds, const glm::vec3& point, const glm::vec3& normal) {
     // The box lies in its circumscribed sphere; seen from `point` that sphere subtends the cone
     // of half-angle theta_b about the direction to the centre. Inside it, every direction.
-    const glm::vec3 fromCentre = point - bounds.centre();
-    const glm::vec3 diagonal = bounds.upper - bounds.lower;
-    const float radiusSquared = 0.25f * glm::dot(diagonal, diagonal);
+    const glm::vec3 fromCentre = point - bounds.centre;
     const float distanceSquared = glm::dot(fromCentre, fromCentre);
+    const float radiusSquared = bounds.radius * bounds.radius;
     if (distanceSquared <= radiusSquared) return radiusSquared > 0.0f ? bounds.power / radiusSquared : bounds.power;
-    const float sinSquaredB = radiusSquared / distanceSquared;
-    const float sinB = std::sqrt(sinSquaredB);
-    const float cosB = safeSqrt(1.0f - sinSquaredB);
-    const glm::vec3 toPoint = fromCentre / std::sqrt(distanceSquared);
+    const float inverseDistance = 1.0f / std::sqrt(distanceSquared);
+    const float sinB = bounds.radius * inverseDistance;
+    const float cosB = safeSqrt(1.0f - sinB * sinB);
+    const glm::vec3 toPoint = fromCentre * inverseDistance;
     // The least angle theta' between a normal of the cone and the direction from the box to the
     // point: max(theta_w - theta_o - theta_b, 0). Beyond theta_e nothing is emitted that way.
     const float cosW = glm::dot(bounds.axis, toPoint);
     const float sinW = safeSqrt(1.0f - cosW * cosW);
-    const float sinO = safeSqrt(1.0f - bounds.cosSpread * bounds.cosSpread);
-    const float cosX = cosOfClampedDifference(sinW, cosW, sinO, bounds.cosSpread);
-    const float sinX = sinOfClampedDifference(sinW, cosW, sinO, bounds.cosSpread);
+    const float cosX = cosOfClampedDifference(sinW, cosW, bounds.sinSpread, bounds.cosSpread);
+    const float sinX = sinOfClampedDifference(sinW, cosW, bounds.sinSpread, bounds.cosSpread);
     const float cosLeast = cosOfClampedDifference(sinX, cosX, sinB, cosB);
     if (!(cosLeast > bounds.cosEmission)) return 0.0f;
-    float estimate = bounds.power * cosLeast / distanceSquared;
+    float estimate = bounds.power * cosLeast * (inverseDistance * inverseDistance);
     if (normal != glm::vec3(0.0f)) {
         // The least angle between the surface's normal and a direction toward the box:
         // max(theta_i - theta_b, 0); from 90 degrees on the box lies below the surface.

@@ -19,6 +19,19 @@ struct LightBounds {
     glm::vec3 centre() const { return 0.5f * (lower + upper); }
 };
 
+// What importance() reads of a light's or cluster's bounds, in the form it reads them fastest: the
+// box as its circumscribed sphere, the spread's sine with its cosine.
+struct ImportanceBounds {
+    glm::vec3 centre;
+    float radius;
+    glm::vec3 axis;
+    float power;
+    float cosSpread;
+    float sinSpread;
+    float cosEmission;
+};
+ImportanceBounds importanceBounds(const LightBounds& bounds);
+
 // Bounds holding both (the cones' union is the smallest cone holding both cones).
 LightBounds unite(const LightBounds& a, const LightBounds& b);
 
@@ -28,7 +41,7 @@ LightBounds unite(const LightBounds& a, const LightBounds& b);
 // can send anything there: behind every normal by more than theta_e, or (for a non-zero `normal`,
 // a reflecting surface's) wholly below the surface's tangent plane. A zero `normal` cuts
 // nothing: light from both sides counts (a transmitting surface).
-float importance(const LightBounds& bounds, const glm::vec3& point, const glm::vec3& normal);
+float importance(const ImportanceBounds& bounds, const glm::vec3& point, const glm::vec3& normal);
 
 // The build's cost of a cluster's orientation: the solid angle its cone and emission spread over,
 // weighted by cosine (Conty Estevez & Kulla 2018, equation 1's M_Omega).

@@ -70,7 +70,7 @@ uint32_t LightTree::build(std::vector<Item>::iterator first, std::vector<Item>::
     const auto index = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back({});
     if (last - first == 1) {
-        nodes_[index] = {first->bounds, first->light, true};
+        nodes_[index] = {importanceBounds(first->bounds), first->light, true};
         places_[first->light].trail = trail;
         return index;
     }
@@ -132,14 +132,14 @@ uint32_t LightTree::build(std::vector<Item>::iterator first, std::vector<Item>::
     }
     build(first, middle, trail, depth + 1);
     const uint32_t second = build(middle, last, trail | (uint64_t{1} << depth), depth + 1);
-    nodes_[index] = {bounds, second, false};
+    nodes_[index] = {importanceBounds(bounds), second, false};
     return index;
 }
 
 void LightTree::childProbabilities(const Node& node, uint32_t nodeIndex, const glm::vec3& point,
                                    const glm::vec3& normal, float& first, float& second) const {
-    const LightBounds& firstBounds = nodes_[nodeIndex + 1].bounds;
-    const LightBounds& secondBounds = nodes_[node.index].bounds;
+    const ImportanceBounds& firstBounds = nodes_[nodeIndex + 1].bounds;
+    const ImportanceBounds& secondBounds = nodes_[node.index].bounds;
     float a = importance(firstBounds, point, normal);
     float b = importance(secondBounds, point, normal);
     if (!(a + b > 0.0f)) {

@@ -45,7 +45,7 @@ public:
 
 private:
     struct Node {
-        LightBounds bounds;
+        ImportanceBounds bounds;
         uint32_t index;  // a leaf's light, else the second child (the first follows the node)
         bool leaf;
     };

@@ -32,7 +32,7 @@ glm::vec3 randomDirection(uint64_t k) {
 }  // namespace
 
 TEST_CASE("light bounds: importance is zero behind the emitters and below the surface, else positive") {
-    const LightBounds b = downwardSquare();
+    const ImportanceBounds b = importanceBounds(downwardSquare());
     const glm::vec3 none(0.0f);
     CHECK(importance(b, {0, 0, -1}, none) > 0.0f);            // in front, below the square
     CHECK(importance(b, {0, 0, 3}, none) == 0.0f);            // behind it
