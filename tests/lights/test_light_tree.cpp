@@ -86,7 +86,7 @@ std::vector<Receiver> receivers(int count, uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("light tree: the lights with extent are in it; the others keep their share by power") {
+TEST_CASE("light tree: the lights with extent are in it, the others keep their share by power") {
     const ManyLights scene(1);
     const SceneLights lights(scene.descriptions);
     REQUIRE(lights.size() == kTriangles + 2);
