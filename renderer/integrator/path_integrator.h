@@ -114,7 +114,7 @@ private:
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
     // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
-    // (lightNumbers): sets `shadow` to its shadow ray and the reflected radiance it brings to a
+    // (lightNumbers), the light chosen for `reference` and `choiceNormal`: sets `shadow` to its shadow ray and the reflected radiance it brings to a
     // path of throughput `weight`, MIS-weighted against the direction sampler; leaves it empty
     // when the sample brings nothing whatever the shadow ray finds.
     void lightSample(const SurfaceHit& surface, const glm::vec3& reference, const glm::vec3& choiceNormal,

@@ -4,9 +4,9 @@
 // with Adaptive Tree Splitting"; pbrt-v4's BVHLightSampler is the same idea). From the root, each
 // step goes to one of two children with probability proportional to its importance at the point
 // (light_bounds.h): nearer, brighter clusters facing the point get more of the shadow rays, and a
-// cluster that provably sends nothing there gets none (unless nothing under its parent does). The probability of a light is the product
-// of the steps to its leaf, found again from the root along the light's bit trail, so that
-// probability() gives exactly what choose() gave.
+// cluster that provably sends nothing there gets none (unless nothing under its parent does). The
+// probability of a light is the product of the steps to its leaf, found again from the root along
+// the light's bit trail, so that probability() gives exactly what choose() gave.
 //
 // The lights without bounds stay outside the tree: lights at infinity and delta lights (point,
 // directional). The tree as a whole and each of them are chosen first by sampled power, as the
@@ -32,10 +32,9 @@ public:
     // power 0 are never chosen.
     explicit LightTree(const std::vector<std::unique_ptr<Light>>& lights);
 
-    bool empty() const { return outside_.empty(); }
     // A light for `point`, `normal` the receiving surface's (facing the side light is sampled
     // from) or zero for a surface that transmits. `u` uniform in [0,1). Not to be called when
-    // empty.
+    // no light has sampled power (SceneLights::sampler() is empty then too).
     LightChoice choose(float u, const glm::vec3& point, const glm::vec3& normal) const;
     // The probability with which choose() at `point` and `normal` gives `light`.
     float probability(uint32_t light, const glm::vec3& point, const glm::vec3& normal) const;

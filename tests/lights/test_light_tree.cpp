@@ -112,7 +112,8 @@ TEST_CASE("light tree: at every point the probabilities sum to one, and no light
             const float p = lights.tree().probability(light, r.point, r.normal);
             CHECK(p >= 0.0f);
             sum += p;
-            if (light < kTriangles && p == 0.0f && canReach(scene.descriptions.emitters[light].corners, r.point, r.normal)) {
+            if (light < kTriangles && p == 0.0f &&
+                canReach(scene.descriptions.emitters[light].corners, r.point, r.normal)) {
                 ++passedOver;
             }
         }
