@@ -178,6 +178,7 @@ void RenderCommand::run() const {
             {"sampler", samplerName(settings.integrator.sampler)},
             {"depth", settings.integrator.depth},
             {"nee", settings.integrator.nextEventEstimation},
+            {"light_sampler", lightSamplerName(settings.integrator.lightSampler)},
             {"roulette_depth", settings.integrator.rouletteDepth},
             {"seed", settings.seed},
             {"ranks", job.ranks()},

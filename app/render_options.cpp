@@ -36,6 +36,11 @@ void RenderOptions::addTo(CLI::App& command) {
                      "Next-event estimation (on by default; --no-nee: off): sample emitting "
                      "triangles and the environment (MIS with the sampler) and point lights "
                      "(reached only this way)");
+    command.add_option("--light-sampler", lightSampler,
+                       "How next-event estimation chooses a light: " + lightSamplerNames() +
+                           " (power: by power alone; tree: by a light tree weighing each light by "
+                           "what it can send to the point; auto: the tree in scenes with many emitters)")
+        ->capture_default_str();
     auto* envOption = command.add_option(
         "--env", env,
         "Environment seen by rays leaving the scene: a latitude-longitude EXR (2:1, +y up) or "
@@ -100,6 +105,7 @@ std::vector<std::string> RenderOptions::arguments() const {
         args.insert(args.end(), {"--roulette-depth", std::to_string(rouletteDepth)});
     }
     if (nee != defaults.nee) args.push_back(nee ? "--nee" : "--no-nee");
+    if (lightSampler != defaults.lightSampler) args.insert(args.end(), {"--light-sampler", lightSampler});
     if (!env.empty()) args.insert(args.end(), {"--env", env});
     if (!envColor.empty()) {
         args.push_back("--env-color");
@@ -141,6 +147,12 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     }
     settings.integrator.sampler = *kind;
     settings.integrator.nextEventEstimation = nee;
+    const auto lightKind = parseLightSamplerKind(lightSampler);
+    if (!lightKind) {
+        throw UsageError("--light-sampler: unknown light sampler '" + lightSampler + "' (use " +
+                         lightSamplerNames() + ")");
+    }
+    settings.integrator.lightSampler = *lightKind;
     if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;

@@ -28,6 +28,7 @@ struct RenderOptions {
     int threads = 0;
     bool nee = kProgramDefaults.nextEventEstimation;
     int rouletteDepth = kProgramDefaults.rouletteDepth;
+    std::string lightSampler{lightSamplerName(kProgramDefaults.lightSampler)};
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y

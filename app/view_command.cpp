@@ -77,6 +77,7 @@ void ViewCommand::run() const {
     for (auto& half : viewerSettings.halves) half.depth = settings.integrator.depth;
     viewerSettings.nextEventEstimation = settings.integrator.nextEventEstimation;
     viewerSettings.rouletteDepth = settings.integrator.rouletteDepth;
+    viewerSettings.lightSampler = settings.integrator.lightSampler;
     if (render.epsilon) {
         viewerSettings.depthFromEpsilon = true;
         viewerSettings.epsilon = static_cast<float>(*render.epsilon);

@@ -20,6 +20,14 @@ tests/data/cornell_point/  The Cornell box's room and blocks without the area li
           point light just under the ceiling's centre (in its description, W/sr in mm units): the
           Cornell light's colour, about the irradiance that light gives the floor below it. A scene
           whose light has no radiance bound (K_eps) and that only next-event estimation lights.
+many-lights/  A closed room (units: mm, 2400 wide, 600 high, 4000 deep) of Lambertian walls and
+          floor with four boxes standing on it, lit by 300 small one-sided panels facing into the
+          room (a 12 x 16 grid over the ceiling, two rows along each side wall's upper band, a row
+          on the back and on the front wall), their radiance log-uniform over two orders of
+          magnitude (0.2 to 20), one in five tinted warm or cool, and by three large dim panels
+          low on the walls. Each panel is a light of its own (two triangles, its own material),
+          drawn from a fixed seed: the scene for measuring how next-event estimation chooses
+          among many lights. The camera stands inside, by the front wall.
 sky/      sun-sky.exr: a latitude-longitude HDR sky (256 x 128, +y up, the image's centre along -z,
           as --env reads it): a blue gradient from the horizon to the zenith over a dark ground,
           and a sun 2.5 degrees in radius at 35 degrees elevation toward -z/+x, whose radiance
@@ -285,6 +293,77 @@ def glossy():
                 "fov_y": 32, "width": 480, "height": 270})
 
 
+def many_lights():
+    import random
+    rng = random.Random(20261204)
+    width, height, depth = 2400.0, 600.0, 4000.0
+    sx, sy, sz = width / 1000, height / 500, depth / 1400  # the boxes' layout, drawn for 1000 x 500 x 1400
+    inside = [width / 2, height / 2, depth / 2]
+    room = {
+        "floor": ("floor", [[0, 0, 0], [width, 0, 0], [width, 0, depth], [0, 0, depth]]),
+        "ceiling": ("wall", [[0, height, 0], [width, height, 0], [width, height, depth], [0, height, depth]]),
+        "back_wall": ("wall", [[0, 0, depth], [width, 0, depth], [width, height, depth], [0, height, depth]]),
+        "front_wall": ("wall", [[0, 0, 0], [width, 0, 0], [width, height, 0], [0, height, 0]]),
+        "left_wall": ("blue", [[0, 0, 0], [0, 0, depth], [0, height, depth], [0, height, 0]]),
+        "right_wall": ("ochre", [[width, 0, 0], [width, 0, depth], [width, height, depth], [width, height, 0]]),
+    }
+    groups = [(n, m, [facing(p, sub(inside, centroid(p)))]) for n, (m, p) in room.items()]
+    boxes = [[[150, 260, 300], [380, 260, 300], [380, 260, 520], [150, 260, 520]],
+             [[620, 140, 420], [840, 140, 380], [880, 140, 600], [660, 140, 640]],
+             [[300, 380, 900], [520, 380, 900], [520, 380, 1080], [300, 380, 1080]],
+             [[700, 200, 1000], [900, 200, 1000], [900, 200, 1250], [700, 200, 1250]]]
+    boxes = [[[x * sx, y * sy, z * sz] for x, y, z in top] for top in boxes]
+    groups += [(f"box_{i}", "box", block(top)) for i, top in enumerate(boxes)]
+    inset = 0.8  # off the surface behind, as the Cornell light is
+    panels = []  # (corners, facing direction)
+    for i in range(12):
+        for k in range(16):
+            x, z = (i + 0.5) * width / 12, (k + 0.5) * depth / 16
+            y = height - inset
+            panels.append(([[x - 40, y, z - 40], [x + 40, y, z - 40], [x + 40, y, z + 40], [x - 40, y, z + 40]],
+                           [0, -1, 0]))
+    for wall_x, inward in [(inset, 1), (width - inset, -1)]:
+        for y in (height - 120, height - 50):
+            for k in range(20):
+                z = (k + 0.5) * depth / 20
+                panels.append(([[wall_x, y - 15, z - 20], [wall_x, y - 15, z + 20], [wall_x, y + 15, z + 20],
+                                [wall_x, y + 15, z - 20]], [inward, 0, 0]))
+    for wall_z, inward in [(depth - inset, -1), (inset, 1)]:
+        for i in range(14):
+            x = (i + 0.5) * width / 14
+            panels.append(([[x - 30, height - 80, wall_z], [x + 30, height - 80, wall_z],
+                            [x + 30, height - 40, wall_z], [x - 30, height - 40, wall_z]], [0, 0, inward]))
+    tints = [[1.0, 0.55, 0.2], [0.35, 0.6, 1.0], [1.0, 0.3, 0.6], [0.4, 1.0, 0.45]]
+    materials = [("floor", [("Kd", [0.55, 0.52, 0.48])]), ("wall", [("Kd", [0.75, 0.75, 0.73])]),
+                 ("blue", [("Kd", [0.35, 0.45, 0.65])]), ("ochre", [("Kd", [0.7, 0.55, 0.3])]),
+                 ("box", [("Kd", [0.7, 0.7, 0.7])])]
+    for n, (corners, towards) in enumerate(panels):
+        radiance = 0.2 * 100.0 ** rng.random()
+        colour = rng.choice(tints) if rng.random() < 0.2 else [1.0, 0.95, 0.85]
+        name = f"panel_{n:03d}"
+        groups.append((name, name, [facing(corners, towards)]))
+        materials.append((name, [("Kd", [0.8, 0.8, 0.8]), ("Ke", [radiance * c for c in colour])]))
+    large = [("glow_left", [[inset, 60, 800], [inset, 60, 2000], [inset, 300, 2000], [inset, 300, 800]], [1, 0, 0]),
+             ("glow_right", [[width - inset, 60, 2000], [width - inset, 60, 3400], [width - inset, 300, 3400],
+                             [width - inset, 300, 2000]], [-1, 0, 0]),
+             ("glow_back", [[700, 80, depth - inset], [1700, 80, depth - inset], [1700, 300, depth - inset],
+                            [700, 300, depth - inset]], [0, 0, -1])]
+    for name, corners, towards in large:
+        groups.append((name, "glow", [facing(corners, towards)]))
+    materials.append(("glow", [("Kd", [0.8, 0.8, 0.8]), ("Ke", [0.3, 0.32, 0.36])]))
+    os.makedirs("assets/many-lights", exist_ok=True)
+    write_obj("assets/many-lights/many-lights.obj",
+              ["A room lit by 300 small emissive panels and 3 large dim ones (mm); make_assets.py.",
+               "Counter-clockwise = front. Kd: Lambertian albedo; Ke: radiance, front side only."],
+              groups)
+    write_mtl("assets/many-lights/many-lights.mtl",
+              ["Panels: Ke = radiance, log-uniform in 0.2..20, some tinted; the glow panels are dim."],
+              materials)
+    write_json("assets/many-lights/many-lights.json",
+               {"position": [width / 2, 0.55 * height, 40], "look_at": [width / 2, 0.3 * height, depth], "up": [0, 1, 0],
+                "fov_y": 62, "width": 480, "height": 320})
+
+
 def write_exr(path, width, height, pixel):
     """An uncompressed scanline OpenEXR of 32-bit float B, G, R channels (OpenEXR's file layout:
     the magic number and version, the header's attributes, a scanline offset table, then each
@@ -344,4 +423,5 @@ if __name__ == "__main__":
     cornell_glass()
     furnace()
     glossy()
+    many_lights()
     sky()

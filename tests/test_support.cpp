@@ -118,6 +118,16 @@ double chiSquareCritical(size_t degrees) {
     return k * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
 }
 
+double lambertIrradiance(const glm::dvec3& x, const std::vector<glm::dvec3>& polygon) {
+    double sum = 0.0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec3 v0 = glm::normalize(polygon[i] - x);
+        const glm::dvec3 v1 = glm::normalize(polygon[(i + 1) % polygon.size()] - x);
+        sum += std::acos(glm::dot(v0, v1)) * glm::normalize(glm::cross(v0, v1)).z;
+    }
+    return 0.5 * sum;
+}
+
 void addQuad(MeshData& mesh, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
              const glm::vec3& d, uint32_t material) {
     const auto base = static_cast<uint32_t>(mesh.positions.size());

@@ -112,6 +112,9 @@ double furnaceRadiance(double albedo, double emission, int depth);
 // environment.
 MeshData lambertSquareMesh(const Material& receiver);
 inline constexpr double kLambertSquareIrradiance = 0.752274688454;
+// Lambert's irradiance at `x` (normal +z) from a polygon of radiance 1 above it (notes 5.2):
+// E = 1/2 sum_i Theta_i (n . Gamma_i), vertices counter-clockwise seen from above the emitter.
+double lambertIrradiance(const glm::dvec3& x, const std::vector<glm::dvec3>& polygon);
 // The ray that sees the origin of the receiver, from `from` (above the plane, below the square).
 Ray rayToOrigin(const glm::vec3& from);
 

@@ -40,6 +40,7 @@ struct WorkerConfig {
     std::vector<SideConfig> sides;  // one, or two for the split view
     bool nextEventEstimation = true;
     int rouletteDepth = kRouletteDepthDefault;  // PathIntegratorSettings::rouletteDepth
+    LightSamplerKind lightSampler = LightSamplerKind::Auto;  // PathIntegratorSettings::lightSampler
     uint64_t seed = 0;
     int threads = 0;
     // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.

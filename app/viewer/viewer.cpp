@@ -196,6 +196,7 @@ void Viewer::frame(const FrameTarget& target) {
     config.sides = settings_.sides();
     config.nextEventEstimation = settings_.nextEventEstimation;
     config.rouletteDepth = settings_.rouletteDepth;
+    config.lightSampler = settings_.lightSampler;
     config.seed = settings_.seed;
     config.threads = settings_.threads;
     config.preview = now - lastMotion_ < kSettleTime;

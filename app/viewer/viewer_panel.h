@@ -41,6 +41,7 @@ struct ViewerSettings {
     float epsilon = 1e-3f;
     bool nextEventEstimation = true;
     int rouletteDepth = kRouletteDepthDefault;  // Russian roulette from this bounce on; -1: off
+    LightSamplerKind lightSampler = LightSamplerKind::Auto;  // next-event estimation's light choice
     uint64_t seed = 0;
     int threads = 0;
     float resolutionScale = 1.0f;

@@ -111,6 +111,7 @@ PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings&
       settings_(settings),
       warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
+      lightTree_(scene.lights().usesTree(settings.lightSampler)),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
 PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& lights) {
@@ -157,7 +158,7 @@ void PathIntegrator::radiance(std::span<const Ray> cameraRays, std::span<const P
     std::array<size_t, kBatch> live;  // the paths still going, by index into `paths`
     size_t liveCount = cameraRays.size();
     for (size_t i = 0; i < liveCount; ++i) {
-        paths[i] = PathState{cameraRays[i], glm::vec3(1.0f), PreviousVertex{glm::vec3(0.0f), 0.0f}};
+        paths[i] = PathState{cameraRays[i], glm::vec3(1.0f), PreviousVertex{glm::vec3(0.0f), glm::vec3(0.0f), 0.0f}};
         radiance[i] = glm::vec3(0.0f);
         live[i] = i;
     }
@@ -247,10 +248,13 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // reflected ray it is weighed against must see the emitters from one point for their MIS
     // weights to sum to one.
     const glm::vec3 reference = offsetRayOrigin(surface, surface.normal);
+    // The light tree may pass over lights below a reflecting surface, whose light sample
+    // reflects nothing (lightSample); a transmitting one receives from both sides.
+    const glm::vec3 choiceNormal = isTransmission(bsdf.flags()) ? glm::vec3(0.0f) : surface.normal;
     // Light that reaches the camera after this vertex's reflection counts as bounce + 1
     // bounces, which the depth allows here. A delta lobe reflects nothing a light sample finds.
     if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
-        lightSample(surface, reference, frame, wo, bsdf, lightU, path.weight, shadow);
+        lightSample(surface, reference, choiceNormal, frame, wo, bsdf, lightU, path.weight, shadow);
     }
     BsdfNumbers numbers{diffuseU};
     if (bsdf.readsLobeNumbers()) addLobeNumbers(numbers, samples, bounce);
@@ -272,7 +276,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     }
     // Emission found after a delta lobe could not have been found by a light sample: it counts
     // at full weight (directionPdf 0).
-    path.previous = PreviousVertex{reference, isSpecular(sampled->flags) ? 0.0f : sampled->pdf};
+    path.previous = PreviousVertex{reference, choiceNormal, isSpecular(sampled->flags) ? 0.0f : sampled->pdf};
     path.ray = Ray{spawnOrigin(surface, reference, direction), direction};
     return true;
 }
@@ -283,7 +287,7 @@ glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& directio
     const glm::vec3 emitted = light.emitted(direction, hit);
     if (isBlack(emitted)) return emitted;
     if (!sampleLights_ || previous.directionPdf == 0.0f) return emitted;
-    const float lightPdf = scene_.lights().sampler().probability(index) *
+    const float lightPdf = choiceProbability(index, previous.point, previous.normal) *
                            light.pdf(previous.point, direction, hit);
     return emitted * powerHeuristic(previous.directionPdf, lightPdf);
 }
@@ -302,10 +306,20 @@ glm::vec3 PathIntegrator::lightNumbers(const PathSamples& samples, int bounce) c
     return samples.lightSample(bounce);
 }
 
-void PathIntegrator::lightSample(const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame,
-                                 const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u,
-                                 const glm::vec3& weight, std::optional<ShadowRay>& shadow) const {
-    const LightChoice choice = scene_.lights().sampler().choose(u.x);
+LightChoice PathIntegrator::chooseLight(float u, const glm::vec3& point, const glm::vec3& normal) const {
+    return lightTree_ ? scene_.lights().tree().choose(u, point, normal) : scene_.lights().sampler().choose(u);
+}
+
+float PathIntegrator::choiceProbability(uint32_t light, const glm::vec3& point, const glm::vec3& normal) const {
+    return lightTree_ ? scene_.lights().tree().probability(light, point, normal)
+                      : scene_.lights().sampler().probability(light);
+}
+
+void PathIntegrator::lightSample(const SurfaceHit& surface, const glm::vec3& reference,
+                                 const glm::vec3& choiceNormal, const Frame& frame, const glm::vec3& wo,
+                                 const Bsdf& bsdf, const glm::vec3& u, const glm::vec3& weight,
+                                 std::optional<ShadowRay>& shadow) const {
+    const LightChoice choice = chooseLight(u.x, reference, choiceNormal);
     const Light& light = scene_.lights().light(choice.light);
     const auto sample = light.sample(reference, {u.y, u.z});
     if (!sample) return;

@@ -8,7 +8,8 @@
 // Le (1 - rho^(K+1)) / (1 - rho).
 //
 // With next-event estimation each scattering vertex x_j (j < K) also connects to one point on
-// one light, chosen by power (lights/scene_lights.h). Light that is not a delta light is then
+// one light, chosen by power or by a light tree that weighs the lights by what they can send to
+// the vertex (lights/scene_lights.h). Light that is not a delta light is then
 // reached two ways, by the light sample and by the next bounce's direction; the two are combined
 // by multiple importance sampling with the power heuristic (Veach & Guibas 1995), whose weights
 // sum to 1 for every direction, so the estimate stays unbiased for every sampler. The integrator
@@ -44,6 +45,9 @@ struct PathIntegratorSettings {
     // q = min(1, sqrt(max component of its weight)) and its weight is divided by q. Unbiased; it
     // trades a little variance for not tracing paths whose weight has become small.
     int rouletteDepth = -1;
+    // How next-event estimation chooses its light (lights/scene_lights.h): by power, by the
+    // light tree, or by the tree in scenes with many emitters.
+    LightSamplerKind lightSampler = LightSamplerKind::Auto;
 };
 
 // Russian roulette from this bounce on, as the programs do by default.
@@ -82,6 +86,7 @@ private:
     // Where the path's previous direction was sampled, for the MIS weight of the light it finds.
     struct PreviousVertex {
         glm::vec3 point;  // the vertex's light reference point (extend)
+        glm::vec3 normal;  // the normal its light choice was given (choiceNormal)
         float directionPdf;  // 0: no light sample could have found this direction (camera ray)
     };
     struct PathState {
@@ -109,12 +114,16 @@ private:
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
     // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
-    // (lightNumbers): sets `shadow` to its shadow ray and the reflected radiance it brings to a
+    // (lightNumbers), the light chosen for `reference` and `choiceNormal`: sets `shadow` to its shadow ray and the reflected radiance it brings to a
     // path of throughput `weight`, MIS-weighted against the direction sampler; leaves it empty
     // when the sample brings nothing whatever the shadow ray finds.
-    void lightSample(const SurfaceHit& surface, const glm::vec3& reference, const Frame& frame, const glm::vec3& wo,
-                     const Bsdf& bsdf, const glm::vec3& u, const glm::vec3& weight,
-                     std::optional<ShadowRay>& shadow) const;
+    void lightSample(const SurfaceHit& surface, const glm::vec3& reference, const glm::vec3& choiceNormal,
+                     const Frame& frame, const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u,
+                     const glm::vec3& weight, std::optional<ShadowRay>& shadow) const;
+    // The light chosen for a sample at `point`, whose surface has normal `normal` (zero: light
+    // from either side counts), and the probability of that choice for `light`.
+    LightChoice chooseLight(float u, const glm::vec3& point, const glm::vec3& normal) const;
+    float choiceProbability(uint32_t light, const glm::vec3& point, const glm::vec3& normal) const;
 
     // The random numbers a light sample draws (PathSamples::lightSample): the choice and the
     // point when the scene has more than one light, the point alone for a single light with
@@ -128,6 +137,7 @@ private:
     PathIntegratorSettings settings_;
     DiffuseWarp warp_;   // the sampler's, for the density of a light sample's direction (MIS)
     bool sampleLights_;  // next-event estimation on and something to sample
+    bool lightTree_;     // the choice by the light tree, not by power
     LightNumbers lightNumbers_;
 };
 

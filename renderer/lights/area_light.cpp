@@ -136,4 +136,15 @@ glm::vec3 AreaLight::emitted(const glm::vec3& direction, const LightHit& hit) co
 // Lambertian emission into one hemisphere: pi Le A (Le's texture mean for a textured emitter).
 glm::vec3 AreaLight::power() const { return kPi * area_ * radiance_; }
 
+// One normal, and emission into its front hemisphere only.
+std::optional<LightBounds> AreaLight::bounds() const {
+    LightBounds bounds;
+    bounds.lower = glm::min(glm::min(p0_, p1_), p2_);
+    bounds.upper = glm::max(glm::max(p0_, p1_), p2_);
+    bounds.axis = normal_;
+    bounds.cosSpread = 1.0f;
+    bounds.cosEmission = 0.0f;
+    return bounds;
+}
+
 }  // namespace strata

@@ -48,6 +48,7 @@ public:
     float pdf(const glm::vec3& point, const glm::vec3& direction, const LightHit& hit) const override;
     glm::vec3 emitted(const glm::vec3& direction, const LightHit& hit) const override;
     glm::vec3 power() const override;
+    std::optional<LightBounds> bounds() const override;
 
     float area() const { return area_; }
     // The solid angle sample() samples uniformly from `point`, or 0 where it samples by area.

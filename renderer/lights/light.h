@@ -12,6 +12,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lights/light_bounds.h"
+
 namespace strata {
 
 // A shadow ray toward a point on a surface stops this fraction of its length short of it (pbrt-v4's
@@ -61,6 +63,10 @@ public:
     // Reached only by sampling (no ray can find it). A delta light has one direction toward
     // each point, so its sample() does not read `u`.
     virtual bool isDelta() const { return false; }
+    // Where the light is and which way it emits, for a light tree (light_tree.h) to cluster it;
+    // nullopt for a light without extent in the scene (delta lights, lights at infinity), which
+    // stays outside the tree. The bounds' power is the tree's to fill in.
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
 };
 
 }  // namespace strata

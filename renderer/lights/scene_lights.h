@@ -1,6 +1,7 @@
 #pragma once
-// Every light of a scene behind the one interface of light.h, and the power-based choice among
-// them (light_sampler.h). The integrator asks it for a light sample at each scattering vertex,
+// Every light of a scene behind the one interface of light.h, and the two choices among them: by
+// power alone (light_sampler.h) and by a light tree that weighs each light by what it can send to
+// the receiving point (light_tree.h). The integrator asks it for a light sample at each scattering vertex,
 // for the light a ray found on a triangle, and for what arrives along a ray that left the scene;
 // it knows no light by its kind. A new kind of light is a file in this folder and one line in
 // SceneLights' constructor. The default environment rule (environment.h) is applied here.
@@ -14,13 +15,14 @@
 // glow in the daylight; they are lights still, found by rays and sampled.
 //
 // The environment comes last so that it can be replaced alone: relighting a scene rebuilds the
-// environment's light and the power-based choice, never the lights of its triangles.
+// environment's light and the choices among the lights, never the lights of its triangles.
 //
 // The lights know no scene: the scene (scene/scene.h) hands them a list of light descriptions,
 // its emitting triangles in world space among them.
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +33,7 @@
 #include "lights/environment.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
+#include "lights/light_tree.h"
 #include "lights/point_light.h"
 #include "materials/material.h"
 
@@ -41,6 +44,15 @@ inline bool emitsLight(const Material& material) {
     const glm::vec3& ke = material.emission;
     return ke.x > 0.0f || ke.y > 0.0f || ke.z > 0.0f;
 }
+
+// How next-event estimation chooses its light: by power, by the light tree, or by the tree only
+// where a scene has enough emitters for it to pay (SceneLights::usesTree).
+enum class LightSamplerKind { Power, Tree, Auto };
+// "power", "tree", "auto", and back; nullopt for an unknown name.
+std::string_view lightSamplerName(LightSamplerKind kind);
+std::optional<LightSamplerKind> parseLightSamplerKind(std::string_view name);
+// The names, for messages: "power|tree|auto".
+std::string lightSamplerNames();
 
 // An emitting triangle as the scene hands it over: where it is in world space, counter-clockwise
 // seen from the side it emits from, and what it emits.
@@ -80,6 +92,10 @@ public:
     size_t size() const { return lights_.size(); }
     const Light& light(uint32_t index) const { return *lights_[index]; }
     const LightSampler& sampler() const { return sampler_; }
+    const LightTree& tree() const { return tree_; }
+    // Whether next-event estimation chooses by the tree under `kind`: Auto resolved by the
+    // number of lights in the tree (light_tree.h's threshold).
+    bool usesTree(LightSamplerKind kind) const;
 
     // The light on `triangle`, or -1 when it emits nothing.
     int32_t lightOnTriangle(uint32_t triangle) const { return triangleLight_[triangle]; }
@@ -110,6 +126,7 @@ private:
     float maxRadianceAtInfinity_ = 0.0f;
     bool litByDefault_ = false;
     LightSampler sampler_;
+    LightTree tree_;
 };
 
 // The note a scene lit by the default sky prints on stderr: why, and how to keep it dark.

@@ -26,17 +26,6 @@ AreaLight downwardLight(double minSphericalSolidAngle = AreaLight::kMinSpherical
     return AreaLight({0, 0, 1}, {0, 2, 1}, {2, 0, 1}, glm::vec3(1.0f, 2.0f, 3.0f), minSphericalSolidAngle);
 }
 
-// Lambert's irradiance at `x` (normal +z) from a polygon of radiance 1 above it (notes 5.2):
-// E = 1/2 sum_i Theta_i (n . Gamma_i), vertices counter-clockwise seen from above the emitter.
-double lambertIrradiance(const glm::dvec3& x, const std::vector<glm::dvec3>& polygon) {
-    double sum = 0.0;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        const glm::dvec3 v0 = glm::normalize(polygon[i] - x);
-        const glm::dvec3 v1 = glm::normalize(polygon[(i + 1) % polygon.size()] - x);
-        sum += std::acos(glm::dot(v0, v1)) * glm::normalize(glm::cross(v0, v1)).z;
-    }
-    return 0.5 * sum;
-}
 glm::vec2 randomPoint(uint64_t k) {
     const uint64_t bits = mixBits(k);
     return {uniformFloat(bits), uniformFloat(bits << 24)};
@@ -148,10 +137,10 @@ TEST_CASE("area light: irradiance of a large close triangle is Lambert's, by are
     // A triangle 0.3 above the receiver, subtending about 3.6 sr. Estimates of E = int Le cos dw
     // by the light's own samples; the exact value by Lambert's formula (checked first against the
     // notes' tabulated 2 x 2 square at height 1).
-    CHECK(lambertIrradiance({0, 0, 0}, {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}) ==
+    CHECK(test::lambertIrradiance({0, 0, 0}, {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}) ==
           doctest::Approx(1.740839502734).epsilon(1e-12));
     const glm::dvec3 p0(-1, -1, 0.3), p1(1.5, -1, 0.3), p2(-1, 1.5, 0.3);
-    const double exact = lambertIrradiance({0, 0, 0}, {p0, p1, p2});
+    const double exact = test::lambertIrradiance({0, 0, 0}, {p0, p1, p2});
     // Counter-clockwise seen from below: faces the receiver.
     const glm::vec3 radiance(1.0f);
     double variance[2];
