@@ -137,10 +137,15 @@ TEST_CASE("an EXR map_Ke's NaN, infinite and negative texels are a warning, and 
         return integrator.radiance(Ray{{x, y, 1.0f}, {0.0f, 0.0f, -1.0f}}, PathSamples(1, 0, 0, 0), rays);
     };
     // Ke 2 times each texel as read: NaN and negatives as 0, +inf as the largest finite value 3.
-    CHECK(seen(0.25f, 0.75f) == glm::vec3(2.0f, 1.0f, 0.5f));
-    CHECK(seen(0.75f, 0.75f) == glm::vec3(0.0f, 2.0f, 2.0f));
-    CHECK(seen(0.25f, 0.25f) == glm::vec3(6.0f, 0.0f, 0.0f));
-    CHECK(seen(0.75f, 0.25f) == glm::vec3(0.0f, 4.0f, 6.0f));
+    // At the texel centres the bilinear filter reads one texel, up to the rounding of the hit's
+    // barycentrics, which differs between Embree's code paths (1e-6 of a neighbour seen here).
+    const auto near = [](const glm::vec3& a, const glm::vec3& b) {
+        return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(1e-5f)));
+    };
+    CHECK(near(seen(0.25f, 0.75f), glm::vec3(2.0f, 1.0f, 0.5f)));
+    CHECK(near(seen(0.75f, 0.75f), glm::vec3(0.0f, 2.0f, 2.0f)));
+    CHECK(near(seen(0.25f, 0.25f), glm::vec3(6.0f, 0.0f, 0.0f)));
+    CHECK(near(seen(0.75f, 0.25f), glm::vec3(0.0f, 4.0f, 6.0f)));
 }
 
 TEST_CASE("MTL names and words in messages have their control characters escaped") {
