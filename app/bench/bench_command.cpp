@@ -105,7 +105,7 @@ std::vector<CyclesScene> cyclesScenes(bool quick) {
     scenes.back().settings.sky = glm::vec3(1.0f);
     scenes.back().settings.whiteMetalRoughness = 0.3f;
     // Hundreds of emissive panels: the light sampler's scene.
-    scenes.push_back(scene("many-lights", bundledAssetsDir() / "many-lights" / "scene.obj", CyclesLevers::Few));
+    scenes.push_back(scene("many-lights", bundledAssetsDir() / "many-lights" / "many-lights.obj", CyclesLevers::Few));
     return scenes;
 }
 
