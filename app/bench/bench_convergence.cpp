@@ -194,7 +194,6 @@ std::optional<Reference> findReference(const LoadedScene& loaded, const Camera& 
     return renderedReference(std::move(image), first, "made");
 }
 
-
 std::vector<ConvergenceRun> runConvergence(const ConvergenceSettings& settings) {
     std::vector<ConvergenceRun> runs;
     std::map<std::string, int> uses;  // two scenes may share a name (assets/cornell, shared cornell)
