@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <glm/common.hpp>
@@ -94,7 +95,9 @@ uint32_t LightTree::build(std::vector<Item>::iterator first, std::vector<Item>::
     if (depth < kHeuristicDepth) {
         const glm::vec3 extent = bounds.upper - bounds.lower;
         for (int axis = 0; axis < 3; ++axis) {
-            if (!(centres[axis] > 0.0f)) continue;
+            // A span that overflows (centres near the float range's ends) has no buckets: its
+            // lights are split by count below, and bucketOf() only ever divides by a finite span.
+            if (!(centres[axis] > 0.0f) || !std::isfinite(centres[axis])) continue;
             std::array<LightBounds, kBuckets> buckets{};
             std::array<bool, kBuckets> filled{};
             for (auto it = first; it != last; ++it) {
