@@ -1,7 +1,7 @@
 #pragma once
 // A live log-log plot of the split view's noise: each side's error against spp or against its
 // render seconds, drawn with ImGui's draw list inside the panel. A side's history grows by a
-// point a pass for as long as it renders; the plot spans all of it and draws a thinned copy.
+// point a pass up to a bound (render_worker.h); the plot spans all of it and draws a thinned copy.
 #include <cstddef>
 #include <string>
 #include <vector>

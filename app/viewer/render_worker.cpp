@@ -52,6 +52,16 @@ int stepsAtOnce(int step, double stepSeconds, uint32_t spp, uint32_t targetSpp) 
 
 }  // namespace
 
+void appendErrorSample(std::vector<ErrorSample>& history, const ErrorSample& sample) {
+    history.push_back(sample);
+    if (history.size() <= kMaxErrorSamples) return;
+    // The points at even indices before the newest, then the newest.
+    size_t kept = 0;
+    for (size_t i = 0; i + 1 < history.size(); i += 2) history[kept++] = history[i];
+    history[kept++] = history.back();
+    history.resize(kept);
+}
+
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
     return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
            a.height != b.height || a.sides != b.sides ||
@@ -269,8 +279,8 @@ bool RenderWorker::renderSteps(Job& job, uint32_t targetSpp) {
     // Noise is measured at complete passes; strata24's estimate needs two pass means.
     if (job.step() != 0 || job.pass() < 2) return true;
     for (auto& side : job.sides) {
-        side.history.push_back(
-            {static_cast<double>(job.spp()), side.session.renderSeconds(), job.curveError(side)});
+        appendErrorSample(side.history,
+                          {static_cast<double>(job.spp()), side.session.renderSeconds(), job.curveError(side)});
     }
     return true;
 }

@@ -78,6 +78,14 @@ struct ErrorSample {
     double error;
 };
 
+// A side's error curve keeps at most this many points. Past it, every other point is dropped (the
+// first and the newest stay), so that a render of 10^6 passes holds and copies into each snapshot
+// no more than one of 10^4 does; the plot draws at most 2 * columns + 2 points (error_plot.h).
+inline constexpr size_t kMaxErrorSamples = 4096;
+
+// Appends `sample` to `history`, thinning it as kMaxErrorSamples says.
+void appendErrorSample(std::vector<ErrorSample>& history, const ErrorSample& sample);
+
 struct SideSnapshot {
     DisplayImage image;
     std::vector<ErrorSample> history;

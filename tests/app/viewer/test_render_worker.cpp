@@ -1,8 +1,9 @@
-// The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat,
-// raising the target spp continues the same accumulation instead of restarting it, the image's
-// first step is shown alone and later steps in groups, steps rendered several at a time stop
-// exactly at a target spp inside a pass, its error against a reference is the bench's, and
-// without one its two sides' errors stand in the ratio that independent renders show.
+// The viewer's render thread on its own (no OpenGL): over 10^4 passes its memory stays flat (its
+// error curves thinned to a bound), raising the target spp continues the same accumulation instead
+// of restarting it, the image's first step is shown alone and later steps in groups, steps
+// rendered several at a time stop exactly at a target spp inside a pass, its error against a
+// reference is the bench's, and without one its two sides' errors stand in the ratio that
+// independent renders show.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -74,13 +75,33 @@ TEST_CASE("render worker: memory stays flat over 10^4 passes, and a higher targe
     const long after = residentKilobytes();
     CHECK(done->generation == warm->generation);  // the same accumulation went on
     CHECK(done->passes == 10000);
-    CHECK(done->sides.at(0).history.size() == 10000 - 1);  // one error point a pass from the 2nd
-    // What may grow: that error history (24 bytes a pass, 235 KB here). Anything per render call
-    // or per snapshot that leaked would be megabytes over these 9800 passes.
+    // One error point a pass from the 2nd, thinned to at most kMaxErrorSamples (98 KB): nothing
+    // the worker keeps grows with the passes, and anything per render call or per snapshot that
+    // leaked would be megabytes over these 9800 passes.
+    const auto& history = done->sides.at(0).history;
+    CHECK(history.size() <= kMaxErrorSamples);
+    CHECK(history.size() > kMaxErrorSamples / 2);
+    CHECK(history.front().spp == 24 * 2);
+    CHECK(history.back().spp == 24 * 10000);
     INFO("resident " << before << " KB after 200 passes, " << after << " KB after 10000");
     // Under AddressSanitizer resident memory grew by 1 GB here over the 10^4 passes (its
     // quarantine and pools): there, only its leak and memory-error checks apply.
     if (!test::kSanitizedBuild) CHECK(after - before < 2048);
+}
+
+TEST_CASE("render worker: an error history is thinned to every other point past its bound, keeping its first and newest") {
+    std::vector<ErrorSample> history;
+    for (int pass = 1; pass <= 3 * static_cast<int>(kMaxErrorSamples); ++pass) {
+        appendErrorSample(history, {double(pass), 0.5 * pass, 1.0 / pass});
+        REQUIRE(history.size() <= kMaxErrorSamples);
+        CHECK(history.back().spp == pass);
+    }
+    CHECK(history.size() > kMaxErrorSamples / 2);
+    CHECK(history.front().spp == 1.0);
+    for (size_t i = 1; i < history.size(); ++i) {
+        CHECK(history[i].spp > history[i - 1].spp);
+        CHECK(history[i].seconds == 0.5 * history[i].spp);  // points move whole
+    }
 }
 
 TEST_CASE("render worker: steps rendered several at once stop exactly at a target inside a pass") {
