@@ -161,7 +161,7 @@ TEST_CASE("cli: a scene that cannot be lit renders black at once and says why") 
     CHECK(nlohmann::json::parse(forced.out)["paths"] == 24 * 64);
 }
 
-TEST_CASE("cli: a scene with no light is lit by a white sky, and says so; --env-color sets its radiance") {
+TEST_CASE("cli: a scene with no light is lit by a white sky, and says so, and --env-color sets its radiance") {
     const auto dir = test::scratchDir("cli-default-sky");
     // A square of albedo 0.5 filling the view: under a sky of 1 every pixel reads 0.5.
     std::ofstream(dir / "grey.obj") << "mtllib grey.mtl\nusemtl grey\nv -9 -9 0\nv 9 -9 0\nv 9 9 0\nv -9 9 0\nf 1 2 3 4\n";
@@ -292,7 +292,7 @@ TEST_CASE("cli: next-event estimation and Russian roulette are on by default, ea
     CHECK(help.out.find("--no-nee") != std::string::npos);
 }
 
-TEST_CASE("cli: the load summary names the triangle test; --watertight forces the watertight one") {
+TEST_CASE("cli: the load summary names the triangle test, and --watertight forces the watertight one") {
     // The furnace near the origin (rounding gap share 3e-6) takes the fast test by default; forced
     // to the watertight one it renders the same furnace value.
     const auto automatic = test::runStrata("render " + furnace() + " --depth 3 --spp 24 --width 16 --height 16 --json");
@@ -305,7 +305,7 @@ TEST_CASE("cli: the load summary names the triangle test; --watertight forces th
     CHECK(std::abs(nlohmann::json::parse(forced.out)["mean_rgb"][0].get<double>() - 1.875) < 0.01 * 1.875);
 }
 
-TEST_CASE("cli: a texture outside the scene's folder is refused; --allow-outside-files reads it in render and view") {
+TEST_CASE("cli: a texture outside the scene's folder is refused, and --allow-outside-files reads it in render and view") {
     const test::ScratchDir dir = test::scratchDir("cli-outside");
     std::filesystem::create_directories(dir / "model");
     std::ofstream(dir / "model" / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\nvt 1 0\n"

@@ -166,7 +166,7 @@ TEST_CASE("render session: the progress callback reports every pass, its index a
     CHECK_THROWS_AS(session.renderSteps(1), Error);
 }
 
-TEST_CASE("render session: a pass range renders exactly those passes; two ranges add up to the whole") {
+TEST_CASE("render session: a pass range renders exactly those passes, and two ranges add up to the whole") {
     const Camera camera(cornell().settings.pose, 13, 11);
     const RenderSettings settings = strata24(3, 21, 2);
     RenderSession first(cornell().scene, camera, settings, {0, 3});

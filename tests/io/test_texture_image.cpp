@@ -44,7 +44,7 @@ std::string errorOf(const std::string& bytes, const std::string& name) {
 }
 }  // namespace
 
-TEST_CASE("an 8-bit colour texture decodes its RGB as sRGB and its alpha linearly; data stays linear; both at 8 bits") {
+TEST_CASE("an 8-bit colour texture decodes its RGB as sRGB and its alpha linearly, and data stays linear, all at 8 bits") {
     const std::string png = pngBytes(2, 1, 4, {10, 128, 255, 128, 0, 1, 2, 255});
     const Texture colour = decode(png, "a.png", TextureEncoding::Colour);
     CHECK(colour.width() == 2);
@@ -121,7 +121,7 @@ TEST_CASE("a grey PNG with a transparent colour decodes with its alpha channel")
     CHECK(t.texel(1, 0).w == 0.0f);
 }
 
-TEST_CASE("a GIF decodes its first image at 8 bits; one whose data is too short for its size is refused") {
+TEST_CASE("a GIF decodes its first image at 8 bits, and one whose data is too short for its size is refused") {
     // The palette: black, white, red, green.
     const Texture t = decode(test::gifFile(3, 2, {0, 1, 2, 3, 2, 1}), "small.gif", TextureEncoding::Data);
     CHECK(t.channels() == 4);

@@ -198,7 +198,7 @@ TEST_CASE("gltf: normals go through the inverse transpose, per corner") {
     checkNear(mesh.normals[1], glm::vec3(1, 2, 0) / std::sqrt(5.0f));
 }
 
-TEST_CASE("gltf: metallic-roughness factors onto Kd, Ks, Pr; emission times its strength") {
+TEST_CASE("gltf: metallic-roughness factors onto Kd, Ks, Pr, and emission times its strength") {
     Model model;
     const int positions = model.positions(kTriangle);
     model.doc["materials"] = json::array({

@@ -321,7 +321,7 @@ TEST_CASE("obj: the models of Debian's assimp-testmodels load or are refused in 
     MESSAGE(loaded << " of " << models << " models in " << folder.string() << " loaded");
 }
 
-TEST_CASE("obj: illum 4, 6 and 7 are dielectrics; illum 3 and 5 with Pr 0 or Ns >= 10000 are mirrors") {
+TEST_CASE("obj: illum 4, 6 and 7 are dielectrics, and illum 3 and 5 with Pr 0 or Ns >= 10000 are mirrors") {
     const std::string mtl =
         "newmtl glass\nKd 0.5 0.5 0.5\nKs 0.3 0.3 0.3\nillum 7\nNi 1.33\nTf 0.9 0.8 0.7\n"
         "newmtl frosted\nillum 4\nPr 0.4\n"

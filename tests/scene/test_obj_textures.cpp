@@ -54,7 +54,7 @@ bool hasWarning(const LoadedScene& scene, const std::string& part) {
 
 }  // namespace
 
-TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad; paths resolve from the MTL's folder") {
+TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad, and paths resolve from the MTL's folder") {
     const test::ScratchDir dir = test::scratchDir("obj_textures");
     writeFile(dir / "quad.obj", kQuadObj);
     // Windows separators and spaces, relative to the MTL's folder.

@@ -186,7 +186,7 @@ TEST_CASE("scene folder: allowOutsideFiles reads the files outside and the load 
           loaded.report.warnings.end());
 }
 
-TEST_CASE("scene folder: a missing texture inside stays a warning; the scene file must be a regular file") {
+TEST_CASE("scene folder: a missing texture inside stays a warning, and the scene file must be a regular file") {
     const Folders f("folder-missing");
     writeObj(f, "map_Kd gone.png");
     const LoadedScene loaded = loadScene(f.model / "s.obj");

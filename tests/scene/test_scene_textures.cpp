@@ -18,7 +18,7 @@ namespace {
 std::string smallPng() { return test::pngFile(8, 8, 8, 2, std::string(8 * (1 + 8 * 3), '\0')); }
 }  // namespace
 
-TEST_CASE("scene textures: each file and encoding counts once; the texture past the budget is refused, named") {
+TEST_CASE("scene textures: each file and encoding counts once, and the texture past the budget is refused, named") {
     const SceneBundle bundle{"s.obj", {{"s.obj", ""}, {"t.png", smallPng()}, {"u.png", smallPng()}}, {}, {}};
     std::vector<std::string> warnings;
     // One texture's worth.

@@ -12,7 +12,7 @@
 
 using namespace strata;
 
-TEST_CASE("text file: regular files are read whole; a FIFO, a device or a folder is not opened nor waited on") {
+TEST_CASE("text file: regular files are read whole, and a FIFO, a device or a folder is not opened nor waited on") {
     const test::ScratchDir dir = test::scratchDir("text-file");
     std::ofstream(dir / "a.txt", std::ios::binary) << std::string("x\0y", 3);
     std::string bytes;

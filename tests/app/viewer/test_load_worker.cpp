@@ -112,7 +112,7 @@ TEST_CASE("load worker threads: a newer request supersedes the load in flight, w
     CHECK(!loader.take());  // the Cornell box's outcome never comes
 }
 
-TEST_CASE("load worker threads: a failing load is its one line; a map loads as a map") {
+TEST_CASE("load worker threads: a failing load is its one line, and a map loads as a map") {
     const auto dir = test::scratchDir("load-worker-fail");
     LoadWorker loader;
     loader.start(sceneRequest(dir / "missing.obj"));

@@ -190,7 +190,7 @@ TEST_CASE("a scene file of a registered extension, in any case, opens in place o
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
 
-TEST_CASE("a scene opened with a file outside its folder is refused naming the option; allowed, it says so") {
+TEST_CASE("a scene opened with a file outside its folder is refused naming the option, and when allowed it says so") {
     const auto dir = test::scratchDir("viewer-outside-files");
     std::filesystem::create_directories(dir / "model");
     std::ofstream(dir / "model" / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n"
@@ -231,7 +231,7 @@ std::filesystem::path writeUnlitQuad(const std::filesystem::path& dir) {
     return dir / "grey.obj";
 }
 
-TEST_CASE("an opened .exr becomes the environment map; a bad one leaves the old one and says why") {
+TEST_CASE("an opened .exr becomes the environment map, and a bad one leaves the old one and says why") {
     const auto dir = test::scratchDir("viewer-environment-map");
     Harness h(smallSingleView(), writeUnlitQuad(dir));
     REQUIRE(h.viewer.workerConfig().scene->scene.lights().litByDefault());
@@ -297,7 +297,7 @@ TEST_CASE("the Light tab relights the open scene in place: same scene and BVH, a
     restarted();
 }
 
-TEST_CASE("the Light tab opens a listed map once; turning it or going back to it reads nothing again") {
+TEST_CASE("the Light tab opens a listed map once, and turning it or going back to it reads nothing again") {
     const auto dir = test::scratchDir("viewer-light-maps");
     Harness h(smallSingleView(), writeUnlitQuad(dir));
     writeImage(dir / "warm.exr", Image{4, 2, std::vector<glm::vec3>(8, glm::vec3(2.0f, 1.0f, 0.5f))});
@@ -573,7 +573,7 @@ TEST_CASE("at 1280x720 the panel lies beside the image: no panel pixel covers th
     }
 }
 
-TEST_CASE("the panel folds to a strip and the image takes the window's width; unfolded, it is back") {
+TEST_CASE("the panel folds to a strip and the image takes the window's width, and unfolded, it is back") {
     Harness h(smallSingleView());
     CHECK(h.viewer.imageArea().x == static_cast<int>(kPanelWidth));
     const int narrow = h.viewer.workerConfig().width;
