@@ -26,6 +26,9 @@ std::vector<SamplerKind> allSamplers() {
     }
     return kinds;
 }
+// Next-event estimation's ways of choosing a light (lights/scene_lights.h), auto first.
+constexpr LightSamplerKind kLightSamplers[] = {LightSamplerKind::Auto, LightSamplerKind::Power,
+                                               LightSamplerKind::Tree};
 constexpr const char* kViews[] = {"colour", "relative error", "sample count", "adaptive mask"};
 constexpr const char* kTonemaps[] = {"clamp", "reinhard", "aces"};
 constexpr int kMaxDepth = 64;
@@ -277,6 +280,23 @@ void ViewerPanel::samplingControls(ViewerSettings& settings, const Scene& scene)
     }
     truncationControls(settings, scene);
     ImGui::Checkbox("next-event estimation", &settings.nextEventEstimation);
+    ImGui::BeginDisabled(!settings.nextEventEstimation);
+    const std::string currentLight(lightSamplerName(settings.lightSampler));
+    const bool open = ImGui::BeginCombo("light choice", currentLight.c_str());
+    remember("light choice");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("power: by emitted power\ntree: by what each light can send to the point\n"
+                          "auto: the tree where a scene has many emitters");
+    }
+    if (open) {
+        for (LightSamplerKind kind : kLightSamplers) {
+            const std::string name(lightSamplerName(kind));
+            if (ImGui::Selectable(name.c_str(), kind == settings.lightSampler)) settings.lightSampler = kind;
+            remember("light choice/" + name, false);
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
     ImGui::SliderInt("roulette from bounce", &settings.rouletteDepth, -1, kMaxDepth,
                      settings.rouletteDepth < 0 ? "off" : "%d");
     int seed = static_cast<int>(settings.seed);

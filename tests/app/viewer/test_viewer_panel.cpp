@@ -122,6 +122,18 @@ TEST_CASE("choosing strata24 in the sampler combo changes the sampler and restar
     CHECK(restarted.spp <= 24);  // accumulation began again
 }
 
+TEST_CASE("the light choice combo switches next-event estimation to the light tree and restarts accumulation") {
+    Harness h(smallSingleView());
+    const uint64_t before = h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 2; }).generation;
+    CHECK(h.viewer.workerConfig().lightSampler == LightSamplerKind::Auto);
+    h.click("light choice");  // opens the combo
+    h.click("light choice/tree");
+    CHECK(h.viewer.settings().lightSampler == LightSamplerKind::Tree);
+    CHECK(h.viewer.workerConfig().lightSampler == LightSamplerKind::Tree);
+    const auto& restarted = h.waitFor([&](const WorkerSnapshot& s) { return s.generation > before; });
+    CHECK(restarted.spp <= 24);
+}
+
 TEST_CASE("the depth slider sets the recursion depth K") {
     Harness h(smallSingleView());
     h.click("depth K", 0.99f);  // at the slider's right end
