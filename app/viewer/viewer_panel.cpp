@@ -26,9 +26,6 @@ std::vector<SamplerKind> allSamplers() {
     }
     return kinds;
 }
-// Next-event estimation's ways of choosing a light (lights/scene_lights.h), auto first.
-constexpr LightSamplerKind kLightSamplers[] = {LightSamplerKind::Auto, LightSamplerKind::Power,
-                                               LightSamplerKind::Tree};
 constexpr const char* kViews[] = {"colour", "relative error", "sample count", "adaptive mask"};
 constexpr const char* kTonemaps[] = {"clamp", "reinhard", "aces"};
 constexpr int kMaxDepth = 64;
@@ -289,7 +286,7 @@ void ViewerPanel::samplingControls(ViewerSettings& settings, const Scene& scene)
                           "auto: the tree where a scene has many emitters");
     }
     if (open) {
-        for (LightSamplerKind kind : kLightSamplers) {
+        for (LightSamplerKind kind : kLightSamplerKinds) {
             const std::string name(lightSamplerName(kind));
             if (ImGui::Selectable(name.c_str(), kind == settings.lightSampler)) settings.lightSampler = kind;
             remember("light choice/" + name, false);

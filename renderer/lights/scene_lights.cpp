@@ -106,13 +106,20 @@ std::string_view lightSamplerName(LightSamplerKind kind) {
 }
 
 std::optional<LightSamplerKind> parseLightSamplerKind(std::string_view name) {
-    for (LightSamplerKind kind : {LightSamplerKind::Power, LightSamplerKind::Tree, LightSamplerKind::Auto}) {
+    for (LightSamplerKind kind : kLightSamplerKinds) {
         if (name == lightSamplerName(kind)) return kind;
     }
     return std::nullopt;
 }
 
-std::string lightSamplerNames() { return "power|tree|auto"; }
+std::string lightSamplerNames() {
+    std::string names;
+    for (LightSamplerKind kind : kLightSamplerKinds) {
+        if (!names.empty()) names += '|';
+        names += lightSamplerName(kind);
+    }
+    return names;
+}
 
 std::string_view SceneLights::defaultSkyReason() const {
     if (!litByDefault_) return {};

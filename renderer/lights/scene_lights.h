@@ -48,10 +48,13 @@ inline bool emitsLight(const Material& material) {
 // How next-event estimation chooses its light: by power, by the light tree, or by the tree only
 // where a scene has enough emitters for it to pay (SceneLights::usesTree).
 enum class LightSamplerKind { Power, Tree, Auto };
+// Every kind, the default first: what a front end lists.
+inline constexpr std::array<LightSamplerKind, 3> kLightSamplerKinds = {
+    LightSamplerKind::Auto, LightSamplerKind::Power, LightSamplerKind::Tree};
 // "power", "tree", "auto", and back; nullopt for an unknown name.
 std::string_view lightSamplerName(LightSamplerKind kind);
 std::optional<LightSamplerKind> parseLightSamplerKind(std::string_view name);
-// The names, for messages: "power|tree|auto".
+// The names, for messages: "auto|power|tree".
 std::string lightSamplerNames();
 
 // An emitting triangle as the scene hands it over: where it is in world space, counter-clockwise

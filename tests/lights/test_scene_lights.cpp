@@ -239,3 +239,14 @@ TEST_CASE("scene lights: ClearCoatTest's glowing labels get the default sky, the
     CHECK(loaded.scene.summary().maxEmission == 1.0f);  // the labels: factor 1 times white texels
     CHECK(loaded.scene.lights().litByDefault());
 }
+
+TEST_CASE("scene lights: every light choice's name is listed and parses back to it") {
+    const std::string names = lightSamplerNames();
+    CHECK(names == "auto|power|tree");
+    for (LightSamplerKind kind : kLightSamplerKinds) {
+        const std::string_view name = lightSamplerName(kind);
+        CHECK(names.find(name) != std::string::npos);
+        CHECK(parseLightSamplerKind(name) == kind);
+    }
+    CHECK_FALSE(parseLightSamplerKind("bvh").has_value());
+}
