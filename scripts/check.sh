@@ -4,7 +4,7 @@
 #          (leak checking off for the viewer and MPI tests, whose Mesa and Open MPI keep memory).
 #   tsan - ThreadSanitizer build (build-tsan): the tests whose names contain "threads" (the
 #          multithreaded render, and any render/UI hand-off test named that way;
-#          STRATA_TSAN_TESTS=. runs the whole suite).
+#          STRATA_TSAN_TESTS=. runs the whole suite), built from the test files that hold them.
 #   fuzz - clang-14 libFuzzer + ASan + UBSan build (build-fuzz) of tests/fuzz: the scene-loader
 #          fuzzer runs STRATA_FUZZ_RUNS executions (default 200000, at most STRATA_FUZZ_SECONDS,
 #          default 180, on a loaded machine) from the seed corpus
@@ -55,9 +55,11 @@ run_asan() {
 }
 
 run_tsan() {
-    configure_and_build build-tsan "" -DSTRATA_SANITIZE=thread
+    local cases=${STRATA_TSAN_TESTS:-threads}
+    # Only the test files holding such cases are built (tests/CMakeLists.txt: STRATA_TESTS_NAMED).
+    configure_and_build build-tsan "" -DSTRATA_SANITIZE=thread -DSTRATA_TESTS_NAMED="$cases"
     TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/tsan.supp} \
-        ctest --test-dir build-tsan --output-on-failure --timeout 900 -j "$jobs" -R "${STRATA_TSAN_TESTS:-threads}"
+        ctest --test-dir build-tsan --output-on-failure --timeout 900 -j "$jobs" -R "$cases"
 }
 
 run_fuzz() {
