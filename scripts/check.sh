@@ -33,7 +33,7 @@ run_asan() {
     # Two renders run in the Release suite only: the 8192x8192 one (67M paths into 4.8 GB of
     # accumulation state) and `strata bench --quick` (minutes under ASan). Neither exercises code
     # that the smaller renders here do not.
-    local own=(--source-file-exclude="$thirdParty" --test-case-exclude='*8192x8192*,bench_smoke*')
+    local own=(--source-file-exclude="$thirdParty" --test-case-exclude='*8192x8192*,bench_smoke*' --order-by=name)
     # Most tests are single-threaded: the suite runs as three processes at once, the leak-checked
     # cases in two halves and the third-party ones, each writing its own log. (doctest's summary
     # counts every case that passes the filters as passed, including those outside its half.)
@@ -41,11 +41,10 @@ run_asan() {
     count=$(build-asan/tests/strata_tests "${own[@]}" --count --no-version |
         sed -n 's/.*passing the current filters: \([0-9]*\).*/\1/p')
     local half=$(((count + 1) / 2)) status=0
-    ASAN_OPTIONS=$asan LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp} \
-        build-asan/tests/strata_tests "${own[@]}" --order-by=name --last="$half" \
+    local lsan=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp}
+    ASAN_OPTIONS=$asan LSAN_OPTIONS=$lsan build-asan/tests/strata_tests "${own[@]}" --last="$half" \
         >build-asan/own-first.log 2>&1 &
-    ASAN_OPTIONS=$asan LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp} \
-        build-asan/tests/strata_tests "${own[@]}" --order-by=name --first="$((half + 1))" \
+    ASAN_OPTIONS=$asan LSAN_OPTIONS=$lsan build-asan/tests/strata_tests "${own[@]}" --first="$((half + 1))" \
         >build-asan/own-second.log 2>&1 &
     ASAN_OPTIONS=$asan:detect_leaks=0 build-asan/tests/strata_tests --source-file="$thirdParty" \
         >build-asan/third-party.log 2>&1 &
