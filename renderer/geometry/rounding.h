@@ -5,8 +5,9 @@
 // the surface normal, that it cannot find that surface again, however far the point is from the
 // origin of the coordinates. The bounds also cover Embree's own rounding, which is relative to
 // the largest coordinate of the triangle it tests.
-#include <glm/common.hpp>
 #include <glm/vec3.hpp>
+
+#include "util/components.h"
 
 namespace strata {
 
@@ -15,8 +16,6 @@ constexpr float gammaBound(int n) {
     constexpr float u = 0x1p-24f;
     return (static_cast<float>(n) * u) / (1.0f - static_cast<float>(n) * u);
 }
-
-inline float maxComponent(const glm::vec3& v) { return glm::max(glm::max(v.x, v.y), v.z); }
 
 // Embree's rounding of a test against a triangle whose largest coordinate is `largest`: its tests
 // work relative to the ray origin (the watertight one in sheared coordinates that mix all three

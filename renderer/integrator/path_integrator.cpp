@@ -7,11 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/rounding.h"
+#include "util/components.h"
 
 namespace strata {
 namespace {
-
-bool isBlack(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
 
 // Veach's power heuristic (exponent 2): the weight of the technique with density `own`.
 float powerHeuristic(float own, float other) {
@@ -101,7 +100,7 @@ bool onLobeSide(const SurfaceHit& surface, const glm::vec3& direction, BsdfFlags
 // tried. The bare product of f cos / pdf (without the 1/survival divisions) stops far too many
 // paths: 11x the variance per path on the Cornell box.
 float rouletteSurvival(const glm::vec3& weight) {
-    return std::min(1.0f, std::sqrt(std::max(std::max(weight.x, weight.y), weight.z)));
+    return std::min(1.0f, std::sqrt(maxComponent(weight)));
 }
 
 }  // namespace
@@ -218,7 +217,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
         return false;
     }
     // Inside an absorbing volume the segment just traced keeps exp(-sigma t) (Beer-Lambert).
-    if (!isBlack(path.absorption)) path.weight *= glm::exp(-path.absorption * hit->t);
+    if (!isZero(path.absorption)) path.weight *= glm::exp(-path.absorption * hit->t);
     const Scene::Triangle& triangle = scene_.triangle(hit->triangle);
     if (triangle.light >= 0) {
         const LightHit onLight{triangle.normal, {hit->u, hit->v}};
@@ -263,7 +262,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     const glm::vec3 direction = frame.toWorld(sampled->wi);
     if (!onLobeSide(surface, direction, sampled->flags)) return false;
     path.weight *= sampled->weight;
-    if (isBlack(path.weight)) return false;
+    if (isZero(path.weight)) return false;
     if (settings_.rouletteDepth >= 0 && bounce + 1 >= settings_.rouletteDepth) {
         const float survival = rouletteSurvival(path.weight);
         if (samples.roulette(bounce) >= survival) return false;
@@ -285,7 +284,7 @@ glm::vec3 PathIntegrator::emittedAlong(uint32_t index, const glm::vec3& directio
                                        const LightHit& hit, const PreviousVertex& previous) const {
     const Light& light = scene_.lights().light(index);
     const glm::vec3 emitted = light.emitted(direction, hit);
-    if (isBlack(emitted)) return emitted;
+    if (isZero(emitted)) return emitted;
     if (!sampleLights_ || previous.directionPdf == 0.0f) return emitted;
     const float lightPdf = choiceProbability(index, previous.point, previous.normal) *
                            light.pdf(previous.point, direction, hit);
@@ -333,7 +332,7 @@ void PathIntegrator::lightSample(const SurfaceHit& surface, const glm::vec3& ref
         if (!(wi.z > 0.0f)) return;
     }
     const glm::vec3 f = bsdf.evaluate(wo, wi);
-    if (isBlack(f)) return;
+    if (isZero(f)) return;
     const float cosine = std::abs(wi.z);
     const glm::vec3 origin = spawnOrigin(surface, reference, sample->direction);
     glm::vec3 direction = sample->direction;

@@ -9,12 +9,11 @@
 #include "lights/environment_map_light.h"
 #include "lights/uniform_environment_light.h"
 #include "util/error.h"
+#include "util/components.h"
 #include "util/text_file.h"
 
 namespace strata {
 namespace {
-
-float maxComponent(const glm::vec3& v) { return std::max(std::max(v.x, v.y), v.z); }
 
 // readEnvironmentMap's checks, on the image read from the file `name` stands for.
 EnvironmentMapFile checkedMap(Image map, const std::string& name) {

@@ -7,16 +7,13 @@
 #include <optional>
 #include <glm/common.hpp>
 
+#include "util/components.h"
+
 namespace strata {
 namespace {
 
 // The largest float below 1: a number reused for the next step stays in [0,1).
 constexpr float kBelowOne = 0x1.fffffep-1f;
-
-float meanSampledPower(const Light& light) {
-    const glm::vec3 p = light.sampledPower();
-    return (p.x + p.y + p.z) / 3.0f;
-}
 
 float surfaceArea(const LightBounds& b) {
     const glm::vec3 d = b.upper - b.lower;
@@ -46,7 +43,7 @@ LightTree::LightTree(const std::vector<std::unique_ptr<Light>>& lights) : places
     outsideLight_.push_back(0);
     for (uint32_t i = 0; i < lights.size(); ++i) {
         const Light& light = *lights[i];
-        const float power = meanSampledPower(light);
+        const float power = meanComponent(light.sampledPower());
         const auto bounds = power > 0.0f ? light.bounds() : std::nullopt;
         if (bounds) {
             items.push_back({*bounds, i});

@@ -5,14 +5,10 @@
 #include "lights/area_light.h"
 #include "lights/directional_light.h"
 #include "lights/point_light.h"
+#include "util/components.h"
 
 namespace strata {
 namespace {
-
-double meanSampledPower(const Light& light) {
-    const glm::vec3 p = light.sampledPower();
-    return (static_cast<double>(p.x) + p.y + p.z) / 3.0;
-}
 
 // Emitting triangles that make up this share of the scene's area outshine the default sky
 // whatever their radiance.
@@ -39,7 +35,7 @@ bool outshineSky(const LightDescriptions& descriptions) {
 std::vector<double> sampledPowersOf(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<double> powers;
     powers.reserve(lights.size());
-    for (const auto& light : lights) powers.push_back(meanSampledPower(*light));
+    for (const auto& light : lights) powers.push_back(meanComponent(light->sampledPower()));
     return powers;
 }
 

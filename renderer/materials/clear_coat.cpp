@@ -4,12 +4,9 @@
 #include <glm/geometric.hpp>
 
 #include "materials/fresnel.h"
+#include "util/components.h"
 
 namespace strata {
-namespace {
-float average(const glm::vec3& v) { return (v.x + v.y + v.z) / 3.0f; }
-}  // namespace
-
 glm::vec3 CoatLayer::albedo(float mu) const {
     if (!lobe) return weight * schlickFresnel(f0, mu);
     const glm::vec2 e = lobe->albedo.albedo(mu);
@@ -19,8 +16,8 @@ glm::vec3 CoatLayer::albedo(float mu) const {
 template <class Base>
 float Coated<Base>::coatProbability(const glm::vec3& wo) const {
     const glm::vec3 coat = coat_.albedo(wo.z);
-    const float c = average(coat);
-    const float b = average((glm::vec3(1.0f) - coat) * base_.albedo(wo));
+    const float c = meanComponent(coat);
+    const float b = meanComponent((glm::vec3(1.0f) - coat) * base_.albedo(wo));
     if (!(b > 0.0f)) return 1.0f;
     // Both keep some probability so that the mixture's density covers each.
     return std::clamp(c / (c + b), 0.05f, 0.95f);

@@ -5,13 +5,11 @@
 #include <glm/geometric.hpp>
 
 #include "materials/fresnel.h"
+#include "util/components.h"
 #include "util/constants.h"
 
 namespace strata {
 namespace {
-
-bool isZero(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
-float average(const glm::vec3& v) { return (v.x + v.y + v.z) / 3.0f; }
 
 // A reflection's sample, built field by field in the optional that returns it: a BsdfSample made
 // first and then moved into the optional is copied through the stack in 16-byte words over its
@@ -73,8 +71,8 @@ float LayeredBsdf::specularProbability(const glm::vec3& wo) const {
     if (!hasSpecular_) return 0.0f;
     if (!hasDiffuse_) return 1.0f;
     const glm::vec3 e = specularAlbedo(wo.z);
-    const float specular = average(e);
-    const float diffuse = average(diffuse_ * (glm::vec3(1.0f) - e));
+    const float specular = meanComponent(e);
+    const float diffuse = meanComponent(diffuse_ * (glm::vec3(1.0f) - e));
     // Both lobes keep some probability so that the mixture's density covers each lobe.
     return std::clamp(specular / std::max(specular + diffuse, 1e-6f), 0.05f, 0.95f);
 }

@@ -1,6 +1,6 @@
 #include "materials/material.h"
 
-#include <glm/common.hpp>
+#include "util/components.h"
 
 namespace strata {
 
@@ -11,7 +11,7 @@ glm::vec3 Material::emissionAt(glm::vec2 uv) const {
 
 float Material::maxEmission() const {
     const glm::vec3 e = textures.emission ? emission * glm::vec3(textures.emission->max()) : emission;
-    return glm::max(glm::max(e.x, e.y), e.z);
+    return maxComponent(e);
 }
 
 glm::vec3 Material::meanEmission() const {

@@ -7,10 +7,10 @@
 
 #include "materials/metallic_roughness.h"
 #include "materials/microfacet.h"
+#include "util/components.h"
 
 namespace strata {
 namespace {
-bool isZero(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
 
 // A texel as a factor of reflectance: in [0, 1] (an EXR texture may hold more, which would
 // create energy), NaN read as 0.
