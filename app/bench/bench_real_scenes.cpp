@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kTitle = "\n### Real scenes: loading, BVH build, first image, throughput, memory\n\n";
+const std::string kRealScenesTitle = "\n### Real scenes: loading, BVH build, first image, throughput, memory\n\n";
 
 struct RealScene {
     std::string name;
@@ -54,7 +54,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
     const fs::path engine = kAssimpModels / "glTF2" / "2CylinderEngine-glTF-Binary" / "2CylinderEngine.glb";
     const fs::path spider = kAssimpModels / "OBJ" / "spider.obj";
     if (!fs::is_regular_file(engine) && !fs::is_regular_file(spider)) {
-        return kTitle + "Skipped: the models of assimp-testmodels are not installed "
+        return kRealScenesTitle + "Skipped: the models of assimp-testmodels are not installed "
                         "(apt-get install assimp-testmodels).\n";
     }
     std::vector<RealScene> scenes = {{"Cornell box", settings.baseline}};
@@ -106,7 +106,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
     }
     const fs::path log = settings.outDir / "real-scenes.log";
     if (const auto failed = race(renders, settings.repeats, log, "real scenes")) {
-        return kTitle + "Skipped: `strata render` of " + *failed + " failed (see " + log.string() + ").\n";
+        return kRealScenesTitle + "Skipped: `strata render` of " + *failed + " failed (see " + log.string() + ").\n";
     }
     const fs::path viewLog = settings.outDir / "real-scenes-view.log";
     const auto viewFailed = race(views, settings.repeats, viewLog, "real scenes, viewer");
@@ -131,7 +131,7 @@ std::string runRealScenes(const RealScenesSettings& settings) {
     }
     writeFile(settings.outDir / "real-scenes.csv", table.csv());
     // cell() formats at most 255 characters: the note is put together from short pieces.
-    return kTitle +
+    return kRealScenesTitle +
            cell("%dx%d, depth %d, strata24, %s. ", settings.width, settings.height, settings.depth,
                 threadsText(threads).c_str()) +
            "Read, parse and BVH build: in this process, once. " +

@@ -13,7 +13,7 @@
 namespace strata {
 namespace {
 
-const std::string kTitle = "\n### The viewer: throughput against `strata render`, UI frame times\n\n";
+const std::string kViewerTitle = "\n### The viewer: throughput against `strata render`, UI frame times\n\n";
 
 // What the `strata view --json` runs reported, one entry per run.
 struct ViewReports {
@@ -64,7 +64,7 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
         {"strata view --headless (split view)", splitView,
          [&](const auto& log) { return splitReports.read(log); }, {}, {}}};
     if (const auto failed = race(entrants, settings.repeats, log, "viewer")) {
-        return kTitle + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
+        return kViewerTitle + "Skipped: `" + *failed + "` failed (see " + log.string() + ").\n";
     }
 
     const double paths = double(settings.width) * settings.height * settings.spp;
@@ -77,7 +77,7 @@ std::string runViewerComparison(const ViewerBenchSettings& settings) {
                cell("%.3f", paths / viewSeconds * 1e-6), cell("%.1f", median(viewReports.p50)),
                cell("%.1f", median(viewReports.p95))});
     writeFile(settings.outDir / "viewer.csv", table.csv());
-    return kTitle +
+    return kViewerTitle +
            cell("%s, %dx%d, %d spp, depth %d, the default sampler (%s) and transport, %s; whole "
                 "processes including start-up and loading, runs alternated.\n\n",
                 settings.scene.filename().string().c_str(), settings.width, settings.height, settings.spp,
