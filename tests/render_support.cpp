@@ -38,6 +38,27 @@ CameraPose transformPose(const CameraPose& pose, double scale, const glm::dvec3&
     return moved;
 }
 
+Environment uniformSky(float radiance) {
+    Environment sky;
+    sky.kind = Environment::Kind::Uniform;
+    sky.radiance = glm::vec3(radiance);
+    return sky;
+}
+
+size_t differingPixels(const AccumulationBuffer& a, const AccumulationBuffer& b) {
+    if (a.pixelCount() != b.pixelCount()) return std::max(a.pixelCount(), b.pixelCount());
+    size_t differing = 0;
+    for (size_t p = 0; p < a.pixelCount(); ++p) {
+        if (a.mean(p) != b.mean(p) || a.sampleCount(p) != b.sampleCount(p) ||
+            a.completedPasses(p) != b.completedPasses(p) ||
+            a.passStandardError(p) != b.passStandardError(p) ||
+            a.sampleStandardError(p) != b.sampleStandardError(p)) {
+            ++differing;
+        }
+    }
+    return differing;
+}
+
 std::vector<double> pixelLuminances(const AccumulationBuffer& buffer) {
     std::vector<double> values(buffer.pixelCount());
     for (size_t i = 0; i < values.size(); ++i) values[i] = luminance(buffer.mean(i));

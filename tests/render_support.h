@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/mesh.h"
 #include "integrator/progressive_renderer.h"
+#include "lights/environment.h"
 #include "scene/scene.h"
 
 namespace strata::test {
@@ -24,6 +25,13 @@ CameraPose transformPose(const CameraPose& pose, double scale, const glm::dvec3&
 
 // A direction uniform on the unit sphere, from two uniform numbers of `rng` (z, then the azimuth).
 glm::dvec3 uniformUnitVector(std::mt19937_64& rng);
+
+// A uniform sky of `radiance` in every channel.
+Environment uniformSky(float radiance);
+
+// The pixels whose mean, counts or standard errors differ between the two buffers (all of them
+// when their sizes differ): zero when two renders are bit for bit the same.
+size_t differingPixels(const AccumulationBuffer& a, const AccumulationBuffer& b);
 
 // Pixel luminance means: the pixels are independent estimates of their own values.
 std::vector<double> pixelLuminances(const AccumulationBuffer& buffer);

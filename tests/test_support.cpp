@@ -12,10 +12,12 @@
 
 #include "film/accumulation_buffer.h"
 #include "sampling/path_samples.h"
+#include "sampling/random.h"
 
 namespace strata::test {
 
 std::filesystem::path sourceDir() { return STRATA_SOURCE_DIR; }
+std::filesystem::path cornellScene() { return sourceDir() / "assets" / "cornell" / "cornell.obj"; }
 std::filesystem::path testScene(const std::string& name) {
     return sourceDir() / "tests" / "data" / name / (name + ".obj");
 }
@@ -44,6 +46,11 @@ std::string fileBytes(const std::filesystem::path& path) {
     std::ostringstream bytes;
     bytes << in.rdbuf();
     return bytes.str();
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& bytes) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << bytes;
 }
 
 std::set<std::string> folderEntries(const std::filesystem::path& dir) {
@@ -99,6 +106,11 @@ std::optional<std::string> obeyingPermissions() {
     if (geteuid() != 0) return "";
     if (std::system("command -v setpriv >/dev/null 2>&1") != 0) return std::nullopt;
     return "setpriv --bounding-set=-dac_override,-dac_read_search ";
+}
+
+glm::vec2 hashedPoint(uint64_t key) {
+    const uint64_t bits = mixBits(key);
+    return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
 MeanEstimate estimateMean(const std::vector<double>& values) {

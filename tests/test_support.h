@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "scene/mesh.h"
@@ -34,6 +35,8 @@ inline constexpr bool kSanitizedBuild = false;
 #endif
 
 std::filesystem::path sourceDir();
+// The bundled Cornell box, assets/cornell/cornell.obj.
+std::filesystem::path cornellScene();
 // The scene the suite keeps in tests/data/NAME/NAME.obj (scripts/make_assets.py writes them).
 std::filesystem::path testScene(const std::string& name);
 // The optional shared collection beside the checkout (../shared), when it is there: a test that
@@ -59,6 +62,8 @@ struct CommandResult {
 };
 // The file's bytes; empty when it cannot be read.
 std::string fileBytes(const std::filesystem::path& path);
+// Writes `bytes` to `path`, creating its folder.
+void writeFile(const std::filesystem::path& path, const std::string& bytes);
 // The names of the folder's entries (to check that nothing was left behind in it).
 std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb
@@ -77,6 +82,10 @@ CommandResult runStrata(const std::string& arguments);
 // them, for root setpriv dropping the capabilities that override them (CAP_DAC_OVERRIDE,
 // CAP_DAC_READ_SEARCH). Empty optional when root has no setpriv.
 std::optional<std::string> obeyingPermissions();
+
+// A point of [0,1)^2 from one hashed key (two 24-bit fractions of its hash): reproducible,
+// uniform-looking input for the tests of samplers and lights.
+glm::vec2 hashedPoint(uint64_t key);
 
 // Mean and standard error of the mean of a sample.
 struct MeanEstimate {

@@ -19,7 +19,7 @@ using namespace strata;
 
 namespace {
 std::string furnace() { return (test::sourceDir() / "assets/furnace/furnace.obj").string(); }
-std::string cornell() { return (test::sourceDir() / "assets/cornell/cornell.obj").string(); }
+std::string cornell() { return test::cornellScene().string(); }
 
 int lineCount(const std::string& text) {
     int lines = 0;

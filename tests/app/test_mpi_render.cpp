@@ -24,7 +24,7 @@ std::string mpirun() {
 
 std::string strataBinary() { return STRATA_BINARY; }
 
-std::string cornell() { return (test::sourceDir() / "assets/cornell/cornell.obj").string(); }
+std::string cornell() { return test::cornellScene().string(); }
 
 size_t occurrences(const std::string& text, const std::string& part) {
     size_t count = 0;

@@ -14,7 +14,7 @@ using namespace strata;
 TEST_CASE("render job: a build without MPI started by mpirun stops at once") {
     const auto dir = test::scratchDir("no-mpi");
     const std::string render = std::string(STRATA_BINARY) + " render " +
-                               (test::sourceDir() / "assets/cornell/cornell.obj").string() +
+                               test::cornellScene().string() +
                                " --width 8 --height 8 --spp 24 --out " + (dir / "out.exr").string();
 
     // What Open MPI's mpirun -np 2 gives its processes; rank 0 says why, once.

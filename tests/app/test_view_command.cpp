@@ -138,7 +138,7 @@ TEST_CASE("view --reference measures RMSE: zero for the side that repeats the re
     // distances and cosines follow it, while hemisphere samples' weights depend only on normals.
     const auto dir = test::scratchDir("view-reference");
     const auto reference = dir / "reference.exr";
-    const auto render = test::runStrata("render " + (test::sourceDir() / "assets/cornell/cornell.obj").string() +
+    const auto render = test::runStrata("render " + test::cornellScene().string() +
                                         " --width 48 --height 32 --spp 48 --sampler strata24 --no-nee --out " +
                                         reference.string());
     REQUIRE_MESSAGE(render.exitCode == 0, render.err);

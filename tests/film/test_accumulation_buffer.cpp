@@ -52,7 +52,7 @@ TEST_CASE("accumulation: non-finite samples are dropped and counted, never added
 // buffer that saw every pass, counts exactly and doubles within the summation-order bound
 // 2*gamma_{n-1}, gamma_k = k*u/(1 - k*u), u = 2^-53 (Higham §4.2; radiance is non-negative).
 TEST_CASE("accumulation buffer: buffers of disjoint passes add up to the single-process buffer") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene loaded = loadScene(test::cornellScene());
     const Camera camera(loaded.settings.pose, 20, 16);
     RenderSettings settings;
     settings.seed = 7;

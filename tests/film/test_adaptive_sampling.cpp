@@ -66,6 +66,6 @@ TEST_CASE("early out: a scene without reachable light is recognised as black") {
     CHECK(whyBlack(pointLit, {3, SamplerKind::Strata24, false}).has_value());
     CHECK(whyBlack(pointLit, {0, SamplerKind::Strata24, true}).has_value());
     CHECK_FALSE(whyBlack(pointLit, {1, SamplerKind::Strata24, true}).has_value());
-    const LoadedScene lit = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene lit = loadScene(test::cornellScene());
     CHECK_FALSE(whyBlack(lit.scene, {0, SamplerKind::Uniform, false}).has_value());
 }

@@ -24,13 +24,6 @@ using namespace strata;
 
 namespace {
 
-Environment uniformSky(float radiance) {
-    Environment sky;
-    sky.kind = Environment::Kind::Uniform;
-    sky.radiance = glm::vec3(radiance);
-    return sky;
-}
-
 Material diffuse(const glm::vec3& albedo) {
     Material m;
     m.diffuse = albedo;
@@ -56,7 +49,7 @@ Ray rayOntoCube(int k) {
 
 TEST_CASE("environment: a convex diffuse object under a sky of 1 reads rho, exactly when sampled by cosine") {
     const glm::vec3 rho(0.2f, 0.5f, 0.8f);
-    for (const Environment& sky : {uniformSky(1.0f), Environment{}}) {  // explicit, and the default
+    for (const Environment& sky : {test::uniformSky(1.0f), Environment{}}) {  // explicit, and the default
         const Scene scene(convexCube(rho, sky));
         for (SamplerKind sampler : {SamplerKind::Cosine, SamplerKind::Bsdf}) {
             for (int depth : {1, 2, 6}) {
@@ -83,7 +76,7 @@ TEST_CASE("environment: a convex diffuse object under a sky of 1 reads rho, exac
 }
 
 TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 standard errors for every sampler") {
-    const Scene scene(convexCube(glm::vec3(0.6f), uniformSky(1.0f)));
+    const Scene scene(convexCube(glm::vec3(0.6f), test::uniformSky(1.0f)));
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Strata24Qmc,
                                 SamplerKind::Strata24Cosine, SamplerKind::Strata24CosineQmc,
                                 SamplerKind::Strata24Bsdf, SamplerKind::Cosine}) {
@@ -112,7 +105,7 @@ TEST_CASE("environment: a convex object under a sky of 1 reads rho within 4 stan
 }
 
 TEST_CASE("environment: a rendered convex object shows rho where it covers a pixel and 1 where the sky is") {
-    const Scene scene(convexCube(glm::vec3(0.4f), uniformSky(1.0f)));
+    const Scene scene(convexCube(glm::vec3(0.4f), test::uniformSky(1.0f)));
     const Camera camera(CameraPose{{0.5f, 1.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f}, 24, 24);
     const AccumulationBuffer buffer =
         test::renderPasses(scene, camera, {{2, SamplerKind::Cosine, false}, 5, 1}, 2);
@@ -153,7 +146,7 @@ TEST_CASE("environment: a plane tilted by beta over a black ground receives pi (
         // The ground: black, wide enough that it hides all but 1e-5 rad below the horizon.
         const float g = 1e5f;
         test::addQuad(mesh, {-g, 0, -g}, {-g, 0, g}, {g, 0, g}, {g, 0, -g}, 1);
-        mesh.environment = uniformSky(1.0f);
+        mesh.environment = test::uniformSky(1.0f);
         const Scene scene(std::move(mesh));
         const Ray ray{centre + 0.5f * normal, -normal};
         for (SamplerKind sampler : {SamplerKind::Cosine, SamplerKind::Strata24}) {
@@ -242,7 +235,7 @@ TEST_CASE("environment: a scene with no light is lit white by default, and --env
 TEST_CASE("environment: relit from a sky of 1 to a sky of 2, a scene renders exactly twice as bright, same BVH") {
     // The environment is the only light: doubling its radiance doubles every path's contribution
     // exactly (a power of two), with the same samples, light choices and rays, seed for seed.
-    MeshData mesh = convexCube(glm::vec3(0.6f), uniformSky(1.0f));
+    MeshData mesh = convexCube(glm::vec3(0.6f), test::uniformSky(1.0f));
     mesh.materials.push_back(diffuse(glm::vec3(0.3f)));
     test::addQuad(mesh, {-3, -1, -3}, {3, -1, -3}, {3, -1, 3}, {-3, -1, 3}, 1);  // a floor for shadows
     Scene scene(std::move(mesh));
@@ -250,11 +243,11 @@ TEST_CASE("environment: relit from a sky of 1 to a sky of 2, a scene renders exa
     for (bool nee : {false, true}) {
         CAPTURE(nee);
         const RenderSettings settings{{3, SamplerKind::Strata24, nee}, 7, 1};
-        scene.setEnvironment(uniformSky(1.0f));
+        scene.setEnvironment(test::uniformSky(1.0f));
         const AccumulationBuffer once = test::renderPasses(scene, camera, settings, 2);
         const RTCScene bvh = scene.embreeScene();
         const size_t triangles = scene.summary().triangles;
-        scene.setEnvironment(uniformSky(2.0f));
+        scene.setEnvironment(test::uniformSky(2.0f));
         CHECK(scene.embreeScene() == bvh);
         CHECK(scene.summary().triangles == triangles);
         CHECK(maxEmittedRadiance(scene) == 2.0);
@@ -272,7 +265,7 @@ TEST_CASE("environment: relit from a sky of 1 to a sky of 2, a scene renders exa
 TEST_CASE("environment: a relit scene goes back to its own environment with Default") {
     Scene scene(convexCube(glm::vec3(0.5f), Environment{}));
     REQUIRE(scene.lights().litByDefault());
-    scene.setEnvironment(uniformSky(4.0f));
+    scene.setEnvironment(test::uniformSky(4.0f));
     CHECK_FALSE(scene.lights().litByDefault());
     CHECK(maxEmittedRadiance(scene) == 4.0);
     scene.setEnvironment(Environment{});

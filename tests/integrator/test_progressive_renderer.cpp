@@ -6,6 +6,7 @@
 #include "util/error.h"
 #include "integrator/progressive_renderer.h"
 #include "scene/scene_loader.h"
+#include "render_support.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -26,34 +27,23 @@ AccumulationBuffer render(const LoadedScene& loaded, const Camera& camera, Sampl
     return buffer;
 }
 
-void checkIdentical(const AccumulationBuffer& a, const AccumulationBuffer& b) {
-    REQUIRE(a.pixelCount() == b.pixelCount());
-    size_t differing = 0;
-    for (size_t i = 0; i < a.pixelCount(); ++i) {
-        if (a.mean(i) != b.mean(i) || a.sampleCount(i) != b.sampleCount(i) ||
-            a.completedPasses(i) != b.completedPasses(i)) {
-            ++differing;
-        }
-    }
-    CHECK(differing == 0);
-}
 }  // namespace
 
 TEST_CASE("renderer: 1, 2 and 7 threads give bit-identical images") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene loaded = loadScene(test::cornellScene());
     const Camera camera(loaded.settings.pose, 40, 30);
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24}) {
         const auto one = render(loaded, camera, sampler, 1, false);
-        checkIdentical(one, render(loaded, camera, sampler, 2, false));
-        checkIdentical(one, render(loaded, camera, sampler, 7, false));
+        CHECK(test::differingPixels(one, render(loaded, camera, sampler, 2, false)) == 0);
+        CHECK(test::differingPixels(one, render(loaded, camera, sampler, 7, false)) == 0);
     }
 }
 
 TEST_CASE("renderer: a pass in 24 steps equals the pass at once") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene loaded = loadScene(test::cornellScene());
     const Camera camera(loaded.settings.pose, 24, 24);
-    checkIdentical(render(loaded, camera, SamplerKind::Strata24, 2, false),
-                   render(loaded, camera, SamplerKind::Strata24, 2, true));
+    CHECK(test::differingPixels(render(loaded, camera, SamplerKind::Strata24, 2, false),
+                                render(loaded, camera, SamplerKind::Strata24, 2, true)) == 0);
 }
 
 TEST_CASE("renderer: a different seed gives a different image") {
@@ -85,7 +75,7 @@ TEST_CASE("renderer: steps and passes leave the pixels of the skip mask alone") 
 }
 
 TEST_CASE("renderer: a step rendered in bands of rows equals the step at once") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene loaded = loadScene(test::cornellScene());
     const Camera camera(loaded.settings.pose, 20, 37);
     const RenderSettings settings{{3, SamplerKind::Strata24, false}, 77, 2};
     AccumulationBuffer whole(20, 37), banded(20, 37);
@@ -94,12 +84,12 @@ TEST_CASE("renderer: a step rendered in bands of rows equals the step at once") 
         a.renderStep(whole, 0, step);
         for (int row = 0; row < 37; row += 5) b.renderStep(banded, 0, step, {nullptr, nullptr, row, row + 5});
     }
-    checkIdentical(whole, banded);
+    CHECK(test::differingPixels(whole, banded) == 0);
     CHECK(b.counters().paths == a.counters().paths);
 }
 
 TEST_CASE("renderer: a pass in groups of steps equals the pass step by step") {
-    const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene loaded = loadScene(test::cornellScene());
     const Camera camera(loaded.settings.pose, 19, 13);
     const RenderSettings settings{{3, SamplerKind::Strata24, false}, 91, 2};
     AccumulationBuffer stepwise(19, 13), grouped(19, 13);
@@ -113,7 +103,7 @@ TEST_CASE("renderer: a pass in groups of steps equals the pass step by step") {
         b.renderSteps(grouped, 0, first, end);
         first = end;
     }
-    checkIdentical(stepwise, grouped);
+    CHECK(test::differingPixels(stepwise, grouped) == 0);
     CHECK(grouped.completedPasses(0) == 1u);
     CHECK_THROWS_AS(b.renderSteps(grouped, 1, 5, 5), Error);
     CHECK_THROWS_AS(b.renderSteps(grouped, 1, 20, 25), Error);

@@ -139,7 +139,7 @@ TEST_CASE("render extremes: a 1x1 image and an 8192x8192 image") {
 }
 
 TEST_CASE("render extremes: more threads than cores give the bit-identical image") {
-    const LoadedScene cornell = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene cornell = loadScene(test::cornellScene());
     const Camera camera(cornell.settings.pose, 24, 24);
     RenderSettings settings = withDepth(3, 9);
     settings.threads = 1;

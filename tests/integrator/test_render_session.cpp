@@ -11,6 +11,7 @@
 #include "film/accumulation_buffer.h"
 #include "integrator/render_session.h"
 #include "scene/scene_loader.h"
+#include "render_support.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -19,7 +20,7 @@ using namespace strata;
 namespace {
 
 const LoadedScene& cornell() {
-    static const LoadedScene loaded = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    static const LoadedScene loaded = loadScene(test::cornellScene());
     return loaded;
 }
 
@@ -33,20 +34,6 @@ RenderSettings strata24(int depth, uint64_t seed, int threads) {
 }
 
 // Every statistic the buffer keeps, bit for bit.
-void checkIdentical(const AccumulationBuffer& a, const AccumulationBuffer& b) {
-    REQUIRE(a.pixelCount() == b.pixelCount());
-    size_t differing = 0;
-    for (size_t p = 0; p < a.pixelCount(); ++p) {
-        if (a.mean(p) != b.mean(p) || a.sampleCount(p) != b.sampleCount(p) ||
-            a.completedPasses(p) != b.completedPasses(p) ||
-            a.passStandardError(p) != b.passStandardError(p) ||
-            a.sampleStandardError(p) != b.sampleStandardError(p)) {
-            ++differing;
-        }
-    }
-    CHECK(differing == 0);
-}
-
 }  // namespace
 
 TEST_CASE("render session: a budget in spp stops exactly, inside a pass too") {
@@ -180,7 +167,7 @@ TEST_CASE("render session: a pass range renders exactly those passes, and two ra
     AccumulationBuffer passes(13, 11);
     ProgressiveRenderer renderer(cornell().scene, camera, settings);
     for (uint32_t pass = 3; pass < 7; ++pass) renderer.renderPass(passes, pass);
-    checkIdentical(second.buffer(), passes);
+    CHECK(test::differingPixels(second.buffer(), passes) == 0);
 
     // Added as the MPI ranks' buffers are (render_job.cpp): the counts exactly, the sums up to the
     // order of the additions, which no two orders can make bit-identical in general (a few ulps:
@@ -236,6 +223,6 @@ TEST_CASE("render session: whole passes, steps, groups of steps and bands give b
         CHECK(session->completedPasses() == 6);
         CHECK(session->counters().paths == whole.counters().paths);
         CHECK(session->adaptive().doneMask() == whole.adaptive().doneMask());
-        checkIdentical(session->buffer(), whole.buffer());
+        CHECK(test::differingPixels(session->buffer(), whole.buffer()) == 0);
     }
 }

@@ -14,6 +14,7 @@
 
 #include "integrator/path_integrator.h"
 #include "scene/scene.h"
+#include "render_support.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -44,13 +45,6 @@ MeshData tiltedPlane(const Environment& sky, bool lightBelow = false) {
     return mesh;
 }
 
-Environment uniformSky() {
-    Environment sky;
-    sky.kind = Environment::Kind::Uniform;
-    sky.radiance = glm::vec3(1.0f);
-    return sky;
-}
-
 Environment noSky() {
     Environment none;
     none.kind = Environment::Kind::None;
@@ -62,7 +56,7 @@ const Ray kFromAbove{{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}};
 }  // namespace
 
 TEST_CASE("shading normals: a plane with tilted normals receives pi (1 + cos 60) / 2 from the sky, every sampler") {
-    const Scene scene(tiltedPlane(uniformSky()));
+    const Scene scene(tiltedPlane(test::uniformSky(1.0f)));
     const double exact = kAlbedo * (1.0 + 0.5) / 2.0;  // rho / pi * pi (1 + cos beta) / 2
     for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
                                 SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc,
@@ -105,7 +99,7 @@ TEST_CASE("shading normals: nothing leaks through the surface from a light below
 }
 
 TEST_CASE("shading normals: seen at a grazing angle against their tilt, the plane reads rho, not black") {
-    const Scene scene(tiltedPlane(uniformSky()));
+    const Scene scene(tiltedPlane(test::uniformSky(1.0f)));
     // 10 degrees above the plane, from -x: below the shading hemisphere, above the surface.
     const glm::vec3 toViewer = glm::normalize(glm::vec3(-std::cos(glm::radians(10.0f)), 0.0f,
                                                         std::sin(glm::radians(10.0f))));
@@ -125,7 +119,7 @@ TEST_CASE("shading normals: the 24 strata are built on the shading frame") {
     // 60 degrees apart), so with the strata on the shading frame some strata's directions always
     // leave through the surface and read 0, the rest always reach the sky; on the geometric frame
     // none would.
-    const Scene scene(tiltedPlane(uniformSky()));
+    const Scene scene(tiltedPlane(test::uniformSky(1.0f)));
     const PathIntegrator integrator(scene, {1, SamplerKind::Strata24, false});
     std::vector<int> zeros(24, 0), paths(24, 0);
     uint64_t rays = 0;

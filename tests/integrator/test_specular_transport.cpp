@@ -23,13 +23,6 @@ constexpr SamplerKind kAllSamplers[] = {SamplerKind::Uniform,     SamplerKind::S
                                         SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc, SamplerKind::Strata24CosineQmc,
                                         SamplerKind::Strata24Bsdf, SamplerKind::Bsdf};
 
-Environment uniformSky(float radiance) {
-    Environment sky;
-    sky.kind = Environment::Kind::Uniform;
-    sky.radiance = glm::vec3(radiance);
-    return sky;
-}
-
 Material glass(float roughness = 0.0f) {
     Material m;
     m.name = "glass";
@@ -54,7 +47,7 @@ SphereRender renderSphere(const Material& material, const RenderSettings& settin
     MeshData mesh;
     mesh.materials.push_back(material);
     test::addSphere(mesh, glm::vec3(0.0f), 1.0f, 48, 0);
-    mesh.environment = uniformSky(1.0f);
+    mesh.environment = test::uniformSky(1.0f);
     const Scene scene(std::move(mesh));
     const Camera camera(CameraPose{{0.3f, 0.5f, 4.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 36.0f}, 24, 24);
     int covered = 0;
@@ -115,7 +108,7 @@ TEST_CASE("specular transport: a mirror under a uniform sky reads its Fresnel re
         MeshData mesh;
         mesh.materials.push_back(mirror);
         test::addQuad(mesh, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, 0);
-        mesh.environment = uniformSky(1.0f);
+        mesh.environment = test::uniformSky(1.0f);
         const Scene scene(std::move(mesh));
         for (SamplerKind sampler : kAllSamplers) {
             for (bool nee : {false, true}) {

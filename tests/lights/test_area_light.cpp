@@ -10,7 +10,6 @@
 #include <glm/geometric.hpp>
 
 #include "lights/area_light.h"
-#include "sampling/random.h"
 #include "sampling/spherical_triangle.h"
 #include "test_support.h"
 #include "util/constants.h"
@@ -26,10 +25,6 @@ AreaLight downwardLight(double minSphericalSolidAngle = AreaLight::kMinSpherical
     return AreaLight({0, 0, 1}, {0, 2, 1}, {2, 0, 1}, glm::vec3(1.0f, 2.0f, 3.0f), minSphericalSolidAngle);
 }
 
-glm::vec2 randomPoint(uint64_t k) {
-    const uint64_t bits = mixBits(k);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
 }  // namespace
 
 TEST_CASE("area light: points uniform by area, density d^2 / (A cos) and the same from pdf()") {
@@ -40,7 +35,7 @@ TEST_CASE("area light: points uniform by area, density d^2 / (A cos) and the sam
     double sumX = 0.0;
     double inverseDensity = 0.0;  // estimates the solid angle the triangle subtends
     for (int k = 0; k < kSamples; ++k) {
-        const auto s = light.sample(receiver, randomPoint(k));
+        const auto s = light.sample(receiver, test::hashedPoint(k));
         REQUIRE(s);
         const glm::vec3 point = receiver + s->distance * s->direction;
         CHECK(point.z == doctest::Approx(1.0f));
@@ -88,7 +83,7 @@ TEST_CASE("area light: by solid angle, density 1 / Omega from sample() and pdf()
     const double solidAngle = sphericalTriangleSolidAngle(receiver, {0, 0, 1}, {0, 2, 1}, {2, 0, 1});
     CHECK(light.sphericalSolidAngle(receiver) == solidAngle);
     for (uint64_t k = 0; k < 4000; ++k) {
-        const auto s = light.sample(receiver, randomPoint(k));
+        const auto s = light.sample(receiver, test::hashedPoint(k));
         REQUIRE(s);
         const glm::vec3 point = receiver + s->distance * s->direction;
         CHECK(point.z == doctest::Approx(1.0f).epsilon(1e-6));
@@ -122,7 +117,7 @@ TEST_CASE("area light: the regime depends on the point only, and sample() and pd
         CHECK(light.sphericalSolidAngle(receiver) == (bySolidAngle ? solidAngle : 0.0));
         (bySolidAngle ? spherical : byArea) += 1;
         for (uint64_t k = 0; k < 200; ++k) {
-            const auto s = light.sample(receiver, randomPoint(k + 1000 * step));
+            const auto s = light.sample(receiver, test::hashedPoint(k + 1000 * step));
             REQUIRE(s);
             const LightHit hit{glm::vec3(0.0f, 0.0f, -1.0f)};
             CHECK(light.pdf(receiver, s->direction, hit) == doctest::Approx(s->pdf).epsilon(1e-5));
@@ -149,7 +144,7 @@ TEST_CASE("area light: irradiance of a large close triangle is Lambert's, by are
         CHECK((light.sphericalSolidAngle({0, 0, 0}) > 3.0) == (useSolidAngle == 1));
         std::vector<double> values;
         for (uint64_t k = 0; k < 200000; ++k) {
-            const auto s = light.sample({0, 0, 0}, randomPoint(k + 77));
+            const auto s = light.sample({0, 0, 0}, test::hashedPoint(k + 77));
             values.push_back(s ? s->radiance.x * std::max(0.0f, s->direction.z) / s->pdf : 0.0);
         }
         const auto estimate = test::estimateMean(values);

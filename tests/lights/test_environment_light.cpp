@@ -16,7 +16,6 @@
 #include "lights/environment.h"
 #include "lights/environment_map_light.h"
 #include "lights/uniform_environment_light.h"
-#include "sampling/random.h"
 #include "util/constants.h"
 #include "util/error.h"
 #include "util/luminance.h"
@@ -25,11 +24,6 @@
 using namespace strata;
 
 namespace {
-
-glm::vec2 randomPoint(uint64_t k) {
-    const uint64_t bits = mixBits(k + 0xe27);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
 
 constexpr LightHit kMiss{glm::vec3(0.0f)};
 
@@ -56,7 +50,7 @@ int texelIndex(const glm::vec3& radiance) { return static_cast<int>(radiance.x) 
 
 TEST_CASE("uniform environment: never sampled (nothing above its mean), power pi r^2 4 pi L") {
     const UniformEnvironmentLight light(glm::vec3(1.0f, 2.0f, 3.0f), 2.0f);
-    for (uint64_t k = 0; k < 16; ++k) CHECK_FALSE(light.sample(glm::vec3(0.0f), randomPoint(k)).has_value());
+    for (uint64_t k = 0; k < 16; ++k) CHECK_FALSE(light.sample(glm::vec3(0.0f), test::hashedPoint(k + 0xe27)).has_value());
     CHECK(light.pdf({}, {0, 1, 0}, kMiss) == 0.0f);
     CHECK(light.emitted({0, -1, 0}, kMiss) == glm::vec3(1.0f, 2.0f, 3.0f));
     CHECK(light.power().z == doctest::Approx(kPi * 4.0f * 4.0f * kPi * 3.0f));
@@ -117,7 +111,7 @@ TEST_CASE("environment map: sample() has the density pdf() gives and the radianc
     double inverseDensity = 0.0;
     int pdfMismatches = 0;
     for (int k = 0; k < kSamples; ++k) {
-        const auto s = light.sample(glm::vec3(0.0f), randomPoint(k));
+        const auto s = light.sample(glm::vec3(0.0f), test::hashedPoint(k + 0xe27));
         REQUIRE(s);
         REQUIRE(glm::length(s->direction) == doctest::Approx(1.0f).epsilon(1e-5));
         CHECK(std::isinf(s->distance));
@@ -159,7 +153,7 @@ TEST_CASE("environment map: MIS compensation samples a two-level sky's bright ha
     constexpr int kSamples = 20000;
     std::vector<double> inverse, projected;
     for (uint64_t k = 0; k < kSamples; ++k) {
-        const auto s = sky.sample(glm::vec3(0.0f), randomPoint(k));
+        const auto s = sky.sample(glm::vec3(0.0f), test::hashedPoint(k + 0xe27));
         REQUIRE(s);
         REQUIRE(s->direction.y > 0.0f);
         CHECK(s->radiance == glm::vec3(3.0f));
@@ -177,7 +171,7 @@ TEST_CASE("environment map: MIS compensation samples a two-level sky's bright ha
     const auto flatMap = std::make_shared<const EnvironmentMap>(uniform, "flat");
     CHECK_FALSE(flatMap->sampled());
     const EnvironmentMapLight flat(flatMap, 0.0f, 3.0f);
-    CHECK_FALSE(flat.sample(glm::vec3(0.0f), randomPoint(1)).has_value());
+    CHECK_FALSE(flat.sample(glm::vec3(0.0f), test::hashedPoint(1 + 0xe27)).has_value());
     CHECK(flat.pdf({}, {0, 1, 0}, kMiss) == 0.0f);
     CHECK(flat.sampledPower() == glm::vec3(0.0f));
 }
@@ -207,7 +201,7 @@ TEST_CASE("environment map: a turned map samples the unturned map's directions, 
     const EnvironmentMapLight turned(map, 35.0f, 1.0f);
     const double a = 35.0 * M_PI / 180.0;
     for (uint64_t k = 0; k < 200; ++k) {
-        const auto u = randomPoint(k);
+        const auto u = test::hashedPoint(k + 0xe27);
         const auto s0 = unturned.sample(glm::vec3(0.0f), u);
         const auto s1 = turned.sample(glm::vec3(0.0f), u);
         REQUIRE(s0.has_value());

@@ -222,7 +222,7 @@ TEST_CASE("scene lights: emitters no brighter than the sky leave the default sky
 }
 
 TEST_CASE("scene lights: ClearCoatTest's glowing labels get the default sky, the Cornell boxes do not") {
-    CHECK_FALSE(loadScene(test::sourceDir() / "assets" / "cornell" / "cornell.obj").scene.lights().litByDefault());
+    CHECK_FALSE(loadScene(test::cornellScene()).scene.lights().litByDefault());
     if (const auto shared = test::sharedDir()) {
         for (const char* name : {"cornell", "cornell_small", "cornell_glossy"}) {
             const auto path = *shared / "scenes" / name / "scene.obj";

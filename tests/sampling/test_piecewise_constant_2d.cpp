@@ -6,17 +6,9 @@
 #include <vector>
 
 #include "sampling/piecewise_constant_2d.h"
-#include "sampling/random.h"
 #include "test_support.h"
 
 using namespace strata;
-
-namespace {
-glm::vec2 randomPoint(uint64_t k) {
-    const uint64_t bits = mixBits(k + 0x51ab);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
-}  // namespace
 
 TEST_CASE("piecewise constant 2d: samples follow pdf(), zero cells never sampled") {
     constexpr int kWidth = 4, kHeight = 3;
@@ -42,7 +34,7 @@ TEST_CASE("piecewise constant 2d: samples follow pdf(), zero cells never sampled
     std::vector<double> counts(kWidth * kSub * kHeight * kSub, 0.0);
     int mismatched = 0;
     for (int k = 0; k < kSamples; ++k) {
-        const auto s = distribution.sample(randomPoint(k));
+        const auto s = distribution.sample(test::hashedPoint(k + 0x51ab));
         REQUIRE(s.point.x >= 0.0f);
         REQUIRE(s.point.x < 1.0f);
         REQUIRE(s.point.y >= 0.0f);

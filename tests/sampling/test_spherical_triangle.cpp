@@ -11,7 +11,6 @@
 #include <vector>
 #include <glm/geometric.hpp>
 
-#include "sampling/random.h"
 #include "sampling/spherical_triangle.h"
 #include "test_support.h"
 
@@ -31,11 +30,6 @@ const Configuration kConfigurations[] = {
     {"small and far", {0.1, -0.2, 0.0}, {3, 1, 9}, {3.1, 1, 9}, {3, 1.05, 9.1}},
     {"obtuse, oblique", {0, 0, 0}, {-1, 0.2, 2}, {1, 0.25, 2}, {0, 0.3, 2.5}},
 };
-
-glm::vec2 randomPoint(uint64_t k) {
-    const uint64_t bits = mixBits(k + 987654321);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
 
 // Where the ray from `point` along `direction` meets the triangle's plane, as the coefficients
 // (l1, l2) of p1 - p0 and p2 - p0; nullopt when it runs parallel or away from it.
@@ -104,7 +98,7 @@ TEST_CASE("spherical triangle: every sampled direction is unit and hits the tria
         REQUIRE(triangle);
         std::vector<glm::vec2> us = {{0, 0}, {0, almostOne}, {almostOne, 0}, {almostOne, almostOne},
                                      {0.5f, 1e-7f}, {1e-7f, 0.5f}};
-        for (uint64_t k = 0; k < 20000; ++k) us.push_back(randomPoint(k));
+        for (uint64_t k = 0; k < 20000; ++k) us.push_back(test::hashedPoint(k + 987654321));
         for (const glm::vec2 u : us) {
             const glm::dvec3 direction = triangle->sample(u);
             REQUIRE(std::abs(glm::length(direction) - 1.0) < 1e-12);
@@ -147,7 +141,7 @@ TEST_CASE("spherical triangle: directions are uniform by solid angle (chi-square
         CHECK(total == doctest::Approx(triangle->solidAngle()).epsilon(1e-9));
         std::vector<int> counts(expected.size(), 0);
         for (uint64_t k = 0; k < kSamples; ++k) {
-            const auto l = planeCoordinates(c, triangle->sample(randomPoint(k + 1000000)));
+            const auto l = planeCoordinates(c, triangle->sample(test::hashedPoint(k + 1000000 + 987654321)));
             REQUIRE(l);
             const double x = std::clamp(l->x, 0.0, 1.0) * n, y = std::clamp(l->y, 0.0, 1.0) * n;
             int i = std::min(n - 1, static_cast<int>(x)), j = std::min(n - 1 - i, static_cast<int>(y));

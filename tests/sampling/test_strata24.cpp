@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "sampling/hemisphere.h"
-#include "sampling/random.h"
 #include "sampling/strata24.h"
 #include "test_support.h"
 
@@ -53,11 +52,6 @@ std::vector<Triangle> subdivide(const Triangle& t, int levels) {
     return cells;
 }
 
-glm::vec2 randomPoint(uint64_t i) {
-    const uint64_t bits = mixBits(i * 0x9e3779b97f4a7c15ull + 7);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
-
 }  // namespace
 
 TEST_CASE("strata24: every stratum has solid angle pi/12 and angles pi/4, pi/2, pi/3") {
@@ -75,7 +69,7 @@ TEST_CASE("strata24: the strata partition the hemisphere (each direction in exac
     std::array<int, kStrataCount> counts{};
     constexpr int kSamples = 240000;
     for (int i = 0; i < kSamples; ++i) {
-        const glm::vec3 d = sampleUniformHemisphere(randomPoint(i));
+        const glm::vec3 d = sampleUniformHemisphere(test::hashedPoint(i + 0x5eed24));
         int containing = 0;
         for (int id = 0; id < kStrataCount; ++id) containing += stratumContains(id, d) ? 1 : 0;
         REQUIRE(containing == 1);  // boundaries have measure zero
@@ -101,7 +95,7 @@ TEST_CASE("strata24: the convention of the notes (section 2.2) holds") {
 TEST_CASE("strata24: samples are unit, above the surface, in their stratum") {
     for (int id = 0; id < kStrataCount; ++id) {
         for (uint64_t i = 0; i < 20000; ++i) {
-            const glm::vec3 d = sampleStratum(id, randomPoint(i + 1000000 * id));
+            const glm::vec3 d = sampleStratum(id, test::hashedPoint(i + 1000000 * id + 0x5eed24));
             REQUIRE(std::abs(glm::length(d) - 1.0f) < 1e-6f);
             REQUIRE(d.z >= 0.0f);
             REQUIRE(stratumContains(id, d));
@@ -136,7 +130,7 @@ TEST_CASE("strata24: the map is area-preserving (chi-square over 256 exact-area 
         const auto cells = subdivide(verticesOf(id), kLevels);
         std::vector<int> counts(cells.size(), 0);
         for (int i = 0; i < kSamples; ++i) {
-            const glm::dvec3 d(sampleStratum(id, randomPoint(i + 7777777ull * (id + 1))));
+            const glm::dvec3 d(sampleStratum(id, test::hashedPoint(i + 7777777ull * (id + 1) + 0x5eed24)));
             // Descend the subdivision: the cell index has one base-4 digit per level.
             Triangle t = verticesOf(id);
             size_t index = 0;
@@ -174,7 +168,7 @@ TEST_CASE("strata24: mean of cos(theta) per stratum class matches the exact valu
     constexpr int kSamples = 200000;
     for (int id = 0; id < kStrataCount; ++id) {
         double sum = 0.0;
-        for (int i = 0; i < kSamples; ++i) sum += sampleStratum(id, randomPoint(i + 31337ull * id)).z;
+        for (int i = 0; i < kSamples; ++i) sum += sampleStratum(id, test::hashedPoint(i + 31337ull * id + 0x5eed24)).z;
         const int cls = (id % 6) / 2;
         const double standardError = std::sqrt(variance[cls] / kSamples);
         CHECK(std::abs(sum / kSamples - exact[cls]) < 4.0 * standardError);

@@ -21,11 +21,6 @@ using namespace strata;
 
 namespace {
 
-glm::vec2 randomPoint(uint64_t key) {
-    const uint64_t bits = mixBits(key);
-    return {uniformFloat(bits), uniformFloat(bits << 24)};
-}
-
 }  // namespace
 
 TEST_CASE("strata24-warped: samples are unit, above the horizon and in their stratum, edges included") {
@@ -44,7 +39,7 @@ TEST_CASE("strata24-warped: samples are unit, above the horizon and in their str
         // The warp keeps the azimuth, so the quadrant and the order of |x| and |y|; the stratum
         // of the unwarped direction is the one sampled (within rounding of the boundary planes).
         for (int k = 0; k < 2000; ++k) {
-            const glm::vec3 d = sampleWarpedStratum(id, randomPoint(static_cast<uint64_t>(id * 100000 + k)));
+            const glm::vec3 d = sampleWarpedStratum(id, test::hashedPoint(static_cast<uint64_t>(id * 100000 + k)));
             const glm::vec3 back = warpCosineToUniform(d);
             const auto corners = stratumVertices(id);
             const glm::vec3 inside = corners[0] + corners[1] + corners[2];
@@ -56,7 +51,7 @@ TEST_CASE("strata24-warped: samples are unit, above the horizon and in their str
 
 TEST_CASE("strata24-warped: the warp carries uniform directions to cosine-weighted ones, and back") {
     for (int k = 0; k < 1000; ++k) {
-        const glm::vec3 d = sampleUniformHemisphere(randomPoint(0xbacull + k));
+        const glm::vec3 d = sampleUniformHemisphere(test::hashedPoint(0xbacull + k));
         const glm::vec3 there = warpUniformToCosine(d);
         const glm::vec3 back = warpCosineToUniform(there);
         CHECK(std::abs(glm::length(there) - 1.0f) < 4e-7f);
@@ -83,7 +78,7 @@ TEST_CASE("strata24-warped: each warped stratum holds 1/24 of the cosine measure
     constexpr int kSamples = 240000;
     std::vector<int> counts(kStrataCount, 0);
     for (int k = 0; k < kSamples; ++k) {
-        ++counts[static_cast<size_t>(classifyStratum(warpCosineToUniform(sampleCosineHemisphere(randomPoint(0x5eed0000ull + k)))))];
+        ++counts[static_cast<size_t>(classifyStratum(warpCosineToUniform(sampleCosineHemisphere(test::hashedPoint(0x5eed0000ull + k)))))];
     }
     const double expected = static_cast<double>(kSamples) / kStrataCount;
     double chi2 = 0.0;
@@ -101,7 +96,7 @@ TEST_CASE("strata24-warped: one sample per stratum is cosine-distributed overall
     std::vector<int> counts(kZBins * kPhiBins, 0);
     for (int round = 0; round < kRounds; ++round) {
         for (int id = 0; id < kStrataCount; ++id) {
-            const glm::vec3 d = sampleWarpedStratum(id, randomPoint(hashCombine(0xc0501e5ull + round, id)));
+            const glm::vec3 d = sampleWarpedStratum(id, test::hashedPoint(hashCombine(0xc0501e5ull + round, id)));
             const int zb = std::min(kZBins - 1, static_cast<int>(d.z * d.z * kZBins));
             const double phi = std::atan2(d.y, d.x) + M_PI;
             const int pb = std::min(kPhiBins - 1, static_cast<int>(phi / (2.0 * M_PI) * kPhiBins));

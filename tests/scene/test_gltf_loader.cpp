@@ -38,7 +38,7 @@ ParsedScene parse(const std::string& bytes, LoadReport* report = nullptr) {
     return parseGltfScene(bundleOf(bytes), report);
 }
 
-std::string errorOf(const std::string& bytes) {
+std::string gltfError(const std::string& bytes) {
     try {
         parse(bytes);
     } catch (const Error& error) {
@@ -55,7 +55,7 @@ glm::vec3 geometricNormal(const MeshData& mesh, size_t triangle) {
                                      mesh.positions[t[2]] - mesh.positions[t[0]]));
 }
 
-void checkNear(const glm::vec3& a, const glm::vec3& b) {
+void checkApprox(const glm::vec3& a, const glm::vec3& b) {
     CHECK(a.x == doctest::Approx(b.x));
     CHECK(a.y == doctest::Approx(b.y));
     CHECK(a.z == doctest::Approx(b.z));
@@ -119,7 +119,7 @@ TEST_CASE("gltf: quantized positions and normals (KHR_mesh_quantization)") {
     CHECK(mesh.normals[1] == glm::vec3(0, 0, -1));  // -128 clamps to -1
     // Normals must be normalized integers: plain bytes are refused.
     model.doc["accessors"][normals]["normalized"] = false;
-    CHECK(errorOf(model.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: NORMAL accessor 1 has component "
+    CHECK(gltfError(model.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: NORMAL accessor 1 has component "
                                    "type 5120, which glTF does not allow for it");
 }
 
@@ -159,9 +159,9 @@ TEST_CASE("gltf: node transforms, T*R*S and matrix, through the hierarchy") {
     const auto placed = [&](size_t placement, size_t vertex) {
         return glm::vec3(mesh.sharedMeshes[0].placements[placement] * glm::vec4(mesh.positions[vertex], 1.0f));
     };
-    checkNear(placed(0, 0), {1, 2, 3});
-    checkNear(placed(0, 1), {1, 4, 3});
-    checkNear(placed(0, 2), {-1, 2, 3});
+    checkApprox(placed(0, 0), {1, 2, 3});
+    checkApprox(placed(0, 1), {1, 4, 3});
+    checkApprox(placed(0, 2), {-1, 2, 3});
     CHECK(placed(1, 1) == glm::vec3(6, 0, 10));
     CHECK(geometricNormal(mesh, 0).z == doctest::Approx(1.0f));
     // Used once each, the primitives are flattened into world space as they always were.
@@ -170,7 +170,7 @@ TEST_CASE("gltf: node transforms, T*R*S and matrix, through the hierarchy") {
     const MeshData flat = parse(model.gltf()).mesh;
     REQUIRE(flat.positions.size() == 6);
     CHECK(flat.sharedMeshes.empty());
-    checkNear(flat.positions[1], {1, 4, 3});
+    checkApprox(flat.positions[1], {1, 4, 3});
     CHECK(flat.positions[4] == glm::vec3(6, 0, 10));
 }
 
@@ -195,7 +195,7 @@ TEST_CASE("gltf: normals go through the inverse transpose, per corner") {
     CHECK(mesh.triangleNormals[0] == std::array<uint32_t, 3>{0, 1, 2});
     CHECK(mesh.normals[0] == glm::vec3(0, 0, 1));
     // (1, 1, 0) under diag(1/2, 1, 1), unit: (1, 2, 0) / sqrt 5.
-    checkNear(mesh.normals[1], glm::vec3(1, 2, 0) / std::sqrt(5.0f));
+    checkApprox(mesh.normals[1], glm::vec3(1, 2, 0) / std::sqrt(5.0f));
 }
 
 TEST_CASE("gltf: metallic-roughness factors onto Kd, Ks, Pr, and emission times its strength") {
@@ -267,7 +267,7 @@ TEST_CASE("gltf: transmission, ior, volume, specular and clearcoat onto the diel
     const Material& coated = mesh.materials[2];
     CHECK(coated.clearcoat == 0.8f);
     CHECK(coated.clearcoatRoughness == doctest::Approx(0.1));
-    checkNear(coated.specular, glm::vec3(0.02f, 0.01f, 0.01f));  // 0.04 x (1, 0.5, 0.5) x 0.5
+    checkApprox(coated.specular, glm::vec3(0.02f, 0.01f, 0.01f));  // 0.04 x (1, 0.5, 0.5) x 0.5
     const MaterialTable table(mesh.materials);
     CHECK(table.bsdf(0).as<SmoothDielectric>() != nullptr);
     CHECK(table.bsdf(0).as<SmoothDielectric>()->eta() == doctest::Approx(1.33));
@@ -388,8 +388,8 @@ TEST_CASE("gltf: the first camera, from its node, looking down -Z") {
     const ParsedScene parsed = parse(model.gltf(), &report);
     REQUIRE(parsed.camera);
     CHECK(parsed.camera->position == glm::vec3(4, 1, 0));
-    checkNear(glm::normalize(parsed.camera->lookAt - parsed.camera->position), {-1, 0, 0});
-    checkNear(parsed.camera->up, {0, 1, 0});
+    checkApprox(glm::normalize(parsed.camera->lookAt - parsed.camera->position), {-1, 0, 0});
+    checkApprox(parsed.camera->up, {0, 1, 0});
     CHECK(parsed.camera->fovYDegrees == doctest::Approx(28.64788976f));
     // The look-at point lies ahead at the distance of the scene's centre (0.5, 0.5, 0).
     CHECK(glm::length(parsed.camera->lookAt - parsed.camera->position) ==
@@ -428,7 +428,7 @@ TEST_CASE("gltf: KHR_lights_punctual point and directional lights, intensity x c
     CHECK(mesh.pointLights[0].position == glm::vec3(1, 2, 3));
     CHECK(mesh.pointLights[0].intensity == glm::vec3(10, 5, 2.5));
     REQUIRE(mesh.directionalLights.size() == 1);
-    checkNear(mesh.directionalLights[0].direction, {0, -1, 0});
+    checkApprox(mesh.directionalLights[0].direction, {0, -1, 0});
     CHECK(mesh.directionalLights[0].irradiance == glm::vec3(2));
 }
 
@@ -465,29 +465,29 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     Model required = model;
     required.meshNode({{"attributes", {{"POSITION", positions}}}});
     required.doc["extensionsRequired"] = {"KHR_materials_sheen"};
-    CHECK(errorOf(required.gltf()) ==
+    CHECK(gltfError(required.gltf()) ==
           "mem/model.gltf: requires extension KHR_materials_sheen, which Strata does not implement");
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
-    CHECK(errorOf(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
+    CHECK(gltfError(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
                                    "triangles, strips and fans");
     Model outOfRange = model;
     outOfRange.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
-    CHECK(errorOf(outOfRange.gltf()) ==
+    CHECK(gltfError(outOfRange.gltf()) ==
           "mem/model.gltf: every triangle uses an index past its primitive's vertices; nothing is left");
     Model shortView = model;
     shortView.doc["accessors"][0]["count"] = 4;
     shortView.meshNode({{"attributes", {{"POSITION", positions}}}});
-    CHECK(errorOf(shortView.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: POSITION accessor 0: "
+    CHECK(gltfError(shortView.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: POSITION accessor 0: "
                                        "4 elements run past the end of bufferView 0");
     Model cycle = model;
     cycle.doc["nodes"] = json::array({{{"children", {1}}}, {{"children", {0}}}});
     cycle.doc["scenes"] = json::array({{{"nodes", {0}}}});
-    CHECK(errorOf(cycle.gltf()) == "mem/model.gltf: node 0 is reached twice: the node hierarchy is not a tree");
+    CHECK(gltfError(cycle.gltf()) == "mem/model.gltf: node 0 is reached twice: the node hierarchy is not a tree");
     json missing = model.doc;
     missing["buffers"] = json::array({{{"byteLength", 12}, {"uri", "absent.bin"}}});
-    CHECK(errorOf(missing.dump()) == "mem/model.gltf: File not found : absent.bin");
-    const std::string malformed = errorOf(R"({"asset": {"version": "2.0"}, "nodes": [)");
+    CHECK(gltfError(missing.dump()) == "mem/model.gltf: File not found : absent.bin");
+    const std::string malformed = gltfError(R"({"asset": {"version": "2.0"}, "nodes": [)");
     CHECK(malformed.rfind("mem/model.gltf: ", 0) == 0);
     CHECK(malformed.find("parse error") != std::string::npos);
     CHECK(malformed.find('\n') == std::string::npos);
@@ -554,7 +554,7 @@ TEST_CASE("gltf: strengths, intensities and scales are checked as the floats the
     lamp.meshNode({{"attributes", {{"POSITION", lamp.positions(kTriangle)}}}, {"material", 0}});
     lamp.doc["materials"] = json::array(
         {{{"emissiveFactor", {1, 1, 1}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e300}}}}}}});
-    CHECK(errorOf(lamp.gltf()) == "mem/model.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range");
+    CHECK(gltfError(lamp.gltf()) == "mem/model.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range");
     // Finite as a float, it stands.
     lamp.doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e30;
     CHECK(parse(lamp.gltf()).mesh.materials[0].emission == glm::vec3(1e30f));
@@ -563,19 +563,19 @@ TEST_CASE("gltf: strengths, intensities and scales are checked as the floats the
     light.meshNode({{"attributes", {{"POSITION", light.positions(kTriangle)}}}});
     light.doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({{{"type", "point"}, {"intensity", 1e300}}});
     light.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
     light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"color", {1e20, 0, 0}}, {"intensity", 1e20}};
-    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
     light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"intensity", 1}};
     light.doc["nodes"][1]["translation"] = {1e300, 0, 0};
-    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): its node's position is beyond float range");
+    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): its node's position is beyond float range");
 
     Model bumpy;
     bumpy.meshNode({{"attributes", {{"POSITION", bumpy.positions(kTriangle)}}}, {"material", 0}});
     bumpy.doc["images"] = json::array({{{"uri", "gone.png"}}});
     bumpy.doc["textures"] = json::array({{{"source", 0}}});
     bumpy.doc["materials"] = json::array({{{"normalTexture", {{"index", 0}, {"scale", 1e300}}}}});
-    CHECK(errorOf(bumpy.gltf()) == "mem/model.gltf: material '' (0): normalTexture scale is beyond float range");
+    CHECK(gltfError(bumpy.gltf()) == "mem/model.gltf: material '' (0): normalTexture scale is beyond float range");
 
     Model camera;
     camera.meshNode({{"attributes", {{"POSITION", camera.positions(kTriangle)}}}});
@@ -591,7 +591,7 @@ TEST_CASE("gltf: messages quote names with their control characters escaped and 
     Model model;
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}, {"material", 0}});
     model.doc["materials"] = json::array({{{"name", "\x1b[2J\nred"}, {"emissiveFactor", {2, 0, 0}}}});
-    CHECK(errorOf(model.gltf()) == "mem/model.gltf: material '\\x1b[2J\\nred' (0): emissiveFactor needs 3 numbers in 0..1");
+    CHECK(gltfError(model.gltf()) == "mem/model.gltf: material '\\x1b[2J\\nred' (0): emissiveFactor needs 3 numbers in 0..1");
     model.doc["materials"][0]["emissiveFactor"] = {1, 0, 0};
     model.doc["images"] = json::array({{{"uri", "gone\r.png"}}});
     model.doc["textures"] = json::array({{{"source", 0}}});
@@ -604,7 +604,7 @@ TEST_CASE("gltf: messages quote names with their control characters escaped and 
     json broken = model.doc;
     broken["buffers"] = json::array({{{"byteLength", 36},
                                       {"uri", "data:application/octet-stream;base64," + std::string(50000, '!')}}});
-    CHECK(errorOf(broken.dump()) ==
+    CHECK(gltfError(broken.dump()) ==
           "mem/model.gltf: Failed to decode 'uri' : data:application/octet-stream;base64,... (50037 bytes) in Buffer");
 }
 
@@ -656,13 +656,13 @@ TEST_CASE("gltf: a list of the wrong JSON type is named, not read as absent") {
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}});
     Model primitives = model;
     primitives.doc["meshes"][0]["primitives"] = {{"not an array", {{"POSITION", 0}}}};
-    CHECK(errorOf(primitives.gltf()) == "mem/model.gltf: mesh 0: \"primitives\" is not an array (it is object)");
+    CHECK(gltfError(primitives.gltf()) == "mem/model.gltf: mesh 0: \"primitives\" is not an array (it is object)");
     Model children = model;
     children.doc["nodes"][0]["children"] = 1;
-    CHECK(errorOf(children.gltf()) == "mem/model.gltf: node 0: \"children\" is not an array (it is number)");
+    CHECK(gltfError(children.gltf()) == "mem/model.gltf: node 0: \"children\" is not an array (it is number)");
     Model meshes = model;
     meshes.doc["meshes"] = "m";
-    CHECK(errorOf(meshes.gltf()) == "mem/model.gltf: \"meshes\" is not an array (it is string)");
+    CHECK(gltfError(meshes.gltf()) == "mem/model.gltf: \"meshes\" is not an array (it is string)");
     const std::filesystem::path badArray = "/usr/share/assimp/models/glTF2/wrongTypes/badArray.gltf";
     if (!std::filesystem::exists(badArray)) {
         MESSAGE("assimp-testmodels not installed: " << badArray << " is absent, skipped");

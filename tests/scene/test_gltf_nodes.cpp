@@ -19,7 +19,7 @@ using test::errorOf;
 
 namespace {
 
-const std::vector<float> kQuad{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+const std::vector<float> kQuadPositions{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 
 bool warned(const LoadReport& report, const std::string& line) {
     return std::count(report.warnings.begin(), report.warnings.end(), "mem/model.gltf: " + line) == 1;
@@ -39,7 +39,7 @@ TEST_CASE("gltf nodes: vertices that make no whole triangle are left out with a 
 
 TEST_CASE("gltf nodes: a triangle with an index past the vertices is left out, the count in one warning") {
     test::Model model;
-    const int positions = model.positions(kQuad);
+    const int positions = model.positions(kQuadPositions);
     const int indices = model.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 9, 0, 2, 3}, "SCALAR", 5123, 9);
     model.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
     LoadReport report;
@@ -57,7 +57,7 @@ TEST_CASE("gltf nodes: a triangle with an index past the vertices is left out, t
 
 TEST_CASE("gltf nodes: points and lines are skipped beside surfaces, and named when they are all there is") {
     test::Model model;
-    const int positions = model.positions(kQuad);
+    const int positions = model.positions(kQuadPositions);
     model.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 0}});
     CHECK(errorOf(model) == "mem/model.gltf: the file holds only points, no surfaces; Strata renders triangles, "
                             "strips and fans");

@@ -89,7 +89,7 @@ TEST_CASE("model orientation: on the OBJ models of assimp-testmodels and the bun
         return parseSceneFile(readSceneBundle(path)).orientation;
     };
     // The Cornell box: Y-up on y = 0 (as on z = 0), its open side (-z) the front.
-    const ModelOrientation cornell = orientationOf(test::sourceDir() / "assets" / "cornell" / "cornell.obj");
+    const ModelOrientation cornell = orientationOf(test::cornellScene());
     CHECK(cornell.up == kY);
     CHECK(cornell.front == -kZ);
     if (!std::filesystem::is_directory(models)) {

@@ -17,7 +17,7 @@ using namespace strata;
 namespace {
 const char* kMtl = "newmtl white\nKd 0.5 0.6 0.7\nnewmtl lamp\nKd 0 0 0\nKe 3 2 1\n";
 
-std::string errorOf(const std::string& obj, const std::string& mtl = kMtl) {
+std::string objError(const std::string& obj, const std::string& mtl = kMtl) {
     try {
         parseObj("mtllib scene.mtl\n" + obj, "scene.obj", mtl, "scene.mtl");
     } catch (const Error& e) {
@@ -54,24 +54,24 @@ TEST_CASE("obj: degenerate triangles are dropped and counted") {
 
 TEST_CASE("obj: malformed lines name the file and the line") {
         // errorOf puts an mtllib line first: OBJ line numbers below are one more than the string's.
-    CHECK(errorOf("v 0 0 0\nv 1 x 0\n") == "scene.obj:3: 'x' is not a number");
-    CHECK(errorOf("v 0 0\n") == "scene.obj:2: 'v' takes 3 to 7 numbers, got 2");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") ==
+    CHECK(objError("v 0 0 0\nv 1 x 0\n") == "scene.obj:3: 'x' is not a number");
+    CHECK(objError("v 0 0\n") == "scene.obj:2: 'v' takes 3 to 7 numbers, got 2");
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") ==
           "scene.obj:5: vertex index 9 is out of range (3 vertices so far)");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n") == "scene.obj:5: a face needs at least 3 vertices");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/a 3\n") == "scene.obj:5: '2/a' is not a face vertex");
-    CHECK(errorOf("v 0 0 0\n", "newmtl m\nKd 0.5 oops 1\n") == "scene.mtl:2: 'oops' is not a number");
-    CHECK(errorOf("v 0 0 0\n", "Kd 1 1 1\n") == "scene.mtl:1: 'Kd' before any newmtl");
-    CHECK(errorOf("v 0 0 0\n", "# hot\nnewmtl hot\nKd 1.5 0 0\n") ==
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n") == "scene.obj:5: a face needs at least 3 vertices");
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/a 3\n") == "scene.obj:5: '2/a' is not a face vertex");
+    CHECK(objError("v 0 0 0\n", "newmtl m\nKd 0.5 oops 1\n") == "scene.mtl:2: 'oops' is not a number");
+    CHECK(objError("v 0 0 0\n", "Kd 1 1 1\n") == "scene.mtl:1: 'Kd' before any newmtl");
+    CHECK(objError("v 0 0 0\n", "# hot\nnewmtl hot\nKd 1.5 0 0\n") ==
           "scene.mtl:2: material 'hot' has Kd above 1 (creates energy)");
-    CHECK(errorOf("vn 0 x 1\n") == "scene.obj:2: 'x' is not a number");
-    CHECK(errorOf("vn 0 1\n") == "scene.obj:2: 'vn' takes 3 numbers, got 2");
-    CHECK(errorOf("vn 0 0 1e39\n") == "scene.obj:2: '1e39' is out of range for a 32-bit float");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n") ==
+    CHECK(objError("vn 0 x 1\n") == "scene.obj:2: 'x' is not a number");
+    CHECK(objError("vn 0 1\n") == "scene.obj:2: 'vn' takes 3 numbers, got 2");
+    CHECK(objError("vn 0 0 1e39\n") == "scene.obj:2: '1e39' is out of range for a 32-bit float");
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n") ==
           "scene.obj:6: normal index 2 is out of range (1 normals so far)");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/-2 3/1\n") ==
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/-2 3/1\n") ==
           "scene.obj:6: texture coordinate index -2 is out of range (1 texture coordinates so far)");
-    CHECK(errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n") == "scene.obj:5: '1/1/1/1' is not a face vertex");
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n") == "scene.obj:5: '1/1/1/1' is not a face vertex");
     CHECK_THROWS_WITH_AS(parseObj(std::string("\xFF\xFEv\0 ", 5), "utf16.obj", "", "m.mtl"),
                          "utf16.obj: UTF-16 text of an odd number of bytes", Error);
 }
@@ -379,7 +379,7 @@ TEST_CASE("obj: illum 4, 6 and 7 are dielectrics, and illum 3 and 5 with Pr 0 or
 
 TEST_CASE("obj: a dielectric's Ni and Tf are checked") {
     const auto error = [](const std::string& material) {
-        return errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl g\nf 1 2 3\n", "newmtl g\nillum 7\n" + material);
+        return objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl g\nf 1 2 3\n", "newmtl g\nillum 7\n" + material);
     };
     CHECK(error("Ni 0\n") == "scene.mtl:1: material 'g' (illum 7, a dielectric) has an Ni that is not a positive number");
     CHECK(error("Tf 1.5 1 1\n") == "scene.mtl:1: material 'g' has a Tf outside 0..1");

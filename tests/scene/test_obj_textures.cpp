@@ -19,11 +19,6 @@ using namespace strata;
 
 namespace {
 
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-}
-
 void writePng(const std::filesystem::path& path, int width, int height, int channels,
               const std::vector<unsigned char>& pixels) {
     std::filesystem::create_directories(path.parent_path());
@@ -56,9 +51,9 @@ bool hasWarning(const LoadedScene& scene, const std::string& part) {
 
 TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad, and paths resolve from the MTL's folder") {
     const test::ScratchDir dir = test::scratchDir("obj_textures");
-    writeFile(dir / "quad.obj", kQuadObj);
+    test::writeFile(dir / "quad.obj", kQuadObj);
     // Windows separators and spaces, relative to the MTL's folder.
-    writeFile(dir / "mtl" / "quad.mtl",
+    test::writeFile(dir / "mtl" / "quad.mtl",
               "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Kd -bm 1 -blendu on tex dir\\quad tex.png\n"
               "map_Ke .\\tex dir\\quad tex.png\n");
     writePng(dir / "mtl" / "tex dir" / "quad tex.png", 2, 2, 3, kQuadrants);
@@ -89,11 +84,11 @@ TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad, and paths
 
 TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps its constants") {
     const test::ScratchDir dir = test::scratchDir("obj_bad_textures");
-    writeFile(dir / "quad.obj", kQuadObj);
-    writeFile(dir / "mtl" / "quad.mtl",
+    test::writeFile(dir / "quad.obj", kQuadObj);
+    test::writeFile(dir / "mtl" / "quad.mtl",
               "newmtl quad\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ke broken.png\nbump height.png\n"
               "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\n");
-    writeFile(dir / "mtl" / "broken.png", "\x89PNG\r\n\x1a\nthis is not a PNG");
+    test::writeFile(dir / "mtl" / "broken.png", "\x89PNG\r\n\x1a\nthis is not a PNG");
     writePng(dir / "mtl" / "height.png", 1, 1, 3, {128, 128, 128});
     writePng(dir / "mtl" / "alpha.png", 1, 1, 1, {255});
     const LoadedScene loaded = loadScene(dir / "quad.obj");
@@ -114,8 +109,8 @@ TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps
 
 TEST_CASE("a bump map whose values are normals is read as a normal map") {
     const test::ScratchDir dir = test::scratchDir("obj_bump_normals");
-    writeFile(dir / "quad.obj", kQuadObj);
-    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Bump -bm 0.5 n.png\n");
+    test::writeFile(dir / "quad.obj", kQuadObj);
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Bump -bm 0.5 n.png\n");
     writePng(dir / "mtl" / "n.png", 1, 1, 3, {128, 128, 255});
     const LoadedScene loaded = loadScene(dir / "quad.obj");
     CHECK(loaded.report.warnings.empty());
@@ -126,8 +121,8 @@ TEST_CASE("a bump map whose values are normals is read as a normal map") {
 
 TEST_CASE("an EXR map_Ke's NaN, infinite and negative texels are a warning, and the quad emits finite radiance >= 0") {
     const test::ScratchDir dir = test::scratchDir("obj_exr_emission");
-    writeFile(dir / "quad.obj", kQuadObj);
-    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Ke glow.exr\n");
+    test::writeFile(dir / "quad.obj", kQuadObj);
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Ke glow.exr\n");
     // Top row (1, 0.5, 0.25), (NaN, 1, 1); bottom row (inf, -inf, 0), (-5, 2, 3).
     writeImage(dir / "mtl" / "glow.exr", Image{2, 2, {{1.0f, 0.5f, 0.25f}, {std::nanf(""), 1.0f, 1.0f},
                                                       {INFINITY, -INFINITY, 0.0f}, {-5.0f, 2.0f, 3.0f}}});
@@ -152,13 +147,13 @@ TEST_CASE("an EXR map_Ke's NaN, infinite and negative texels are a warning, and 
 
 TEST_CASE("MTL names and words in messages have their control characters escaped") {
     const test::ScratchDir dir = test::scratchDir("obj_escaped_names");
-    writeFile(dir / "quad.obj", "mtllib mtl/quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl \x1b]0;owned\x07\nf 1 2 3\n");
-    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\n");
+    test::writeFile(dir / "quad.obj", "mtllib mtl/quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl \x1b]0;owned\x07\nf 1 2 3\n");
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\n");
     const LoadedScene loaded = loadScene(dir / "quad.obj");
     CHECK(loaded.report.warnings ==
           std::vector<std::string>{(dir / "quad.obj").string() +
                                    ":5: material '\\x1b]0;owned\\x07' is not defined; using grey Kd 0.8"});
-    writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 \x1b[2J 0.5\n");
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 \x1b[2J 0.5\n");
     CHECK_THROWS_WITH_AS(loadScene(dir / "quad.obj"),
                          ((dir / "mtl" / "quad.mtl").string() + ":2: '\\x1b[2J' is not a number").c_str(), Error);
 }

@@ -9,9 +9,9 @@ using namespace strata;
 
 namespace {
 
-const std::string kPose = R"("position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40)";
+const std::string kPoseFromOrigin = R"("position":[0,0,0],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40)";
 
-std::string errorOf(const std::string& text) {
+std::string descriptionError(const std::string& text) {
     try {
         parseSceneDescription(text, "s.json");
     } catch (const Error& e) {
@@ -24,7 +24,7 @@ std::string errorOf(const std::string& text) {
 
 TEST_CASE("scene description: the camera, typed lights and the older point_lights are read") {
     const SceneDescription d = parseSceneDescription(
-        "{" + kPose + R"(,"width":32,"height":16,"extra":"ignored",)"
+        "{" + kPoseFromOrigin + R"(,"width":32,"height":16,"extra":"ignored",)"
         R"("lights":[{"type":"point","position":[1,2,3],"intensity":[4,5,6]}],)"
         R"("point_lights":[{"position":[7,8,9],"intensity":[1,2,3]}]})",
         "s.json");
@@ -52,42 +52,42 @@ TEST_CASE("scene description: without the camera keys the camera is left to the 
     CHECK_FALSE(empty.hasPose);
     CHECK(empty.pointLights.empty());
     // One camera key asks for all of them.
-    CHECK(errorOf(R"({"position":[0,0,0]})") == "s.json: missing key \"look_at\"");
-    CHECK(errorOf(R"({"fov_y":40})") == "s.json: missing key \"position\"");
+    CHECK(descriptionError(R"({"position":[0,0,0]})") == "s.json: missing key \"look_at\"");
+    CHECK(descriptionError(R"({"fov_y":40})") == "s.json: missing key \"position\"");
 }
 
 TEST_CASE("scene description: a bad file is named with the problem") {
-    const std::string syntax = errorOf("{\n\"position\": [0,0,\n}");
+    const std::string syntax = descriptionError("{\n\"position\": [0,0,\n}");
     CHECK(syntax.rfind("s.json: invalid JSON: parse error at line 3", 0) == 0);
-    CHECK(errorOf("[1, 2, 3]") == "s.json: expected a JSON object");
-    CHECK(errorOf(R"({"position":[0,0,"x"],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40})") ==
+    CHECK(descriptionError("[1, 2, 3]") == "s.json: expected a JSON object");
+    CHECK(descriptionError(R"({"position":[0,0,"x"],"look_at":[0,0,1],"up":[0,1,0],"fov_y":40})") ==
           "s.json: \"position\" must be an array of 3 numbers");
-    CHECK(errorOf("{" + kPose + R"(,"width":-3})") == "s.json: \"width\" must be an integer in 1..65536");
-    CHECK(errorOf(R"({"height":0})") == "s.json: \"height\" must be an integer in 1..65536");
-    CHECK(errorOf(R"({"position":[0,0,0],"look_at":[0,0,0],"up":[0,1,0],"fov_y":40})") ==
+    CHECK(descriptionError("{" + kPoseFromOrigin + R"(,"width":-3})") == "s.json: \"width\" must be an integer in 1..65536");
+    CHECK(descriptionError(R"({"height":0})") == "s.json: \"height\" must be an integer in 1..65536");
+    CHECK(descriptionError(R"({"position":[0,0,0],"look_at":[0,0,0],"up":[0,1,0],"fov_y":40})") ==
           "s.json: look_at must differ from position");
-    CHECK(errorOf(R"({"point_lights":[{"position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
-    CHECK(errorOf(R"({"point_lights":{}})") == "s.json: \"point_lights\" must be an array");
-    CHECK(errorOf(R"({"point_lights":[3]})") == "s.json: each of \"point_lights\" must be an object");
+    CHECK(descriptionError(R"({"point_lights":[{"position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
+    CHECK(descriptionError(R"({"point_lights":{}})") == "s.json: \"point_lights\" must be an array");
+    CHECK(descriptionError(R"({"point_lights":[3]})") == "s.json: each of \"point_lights\" must be an object");
     // A negative intensity would give negative radiance.
-    CHECK(errorOf(R"({"lights":[{"type":"point","position":[0,1,0],"intensity":[1,-5,1]}]})") ==
+    CHECK(descriptionError(R"({"lights":[{"type":"point","position":[0,1,0],"intensity":[1,-5,1]}]})") ==
           "s.json: a point light's \"intensity\" must be three values >= 0 (W/sr)");
 }
 
 TEST_CASE("scene description: a light of an unknown type names the file and the type, and the known ones") {
-    CHECK(errorOf(R"({"lights":[{"type":"spot","position":[0,1,0],"intensity":[1,1,1]}]})") ==
+    CHECK(descriptionError(R"({"lights":[{"type":"spot","position":[0,1,0],"intensity":[1,1,1]}]})") ==
           "s.json: unknown light type 'spot' (known: point)");
-    CHECK(errorOf(R"({"lights":[{"position":[0,1,0],"intensity":[1,1,1]}]})") ==
+    CHECK(descriptionError(R"({"lights":[{"position":[0,1,0],"intensity":[1,1,1]}]})") ==
           "s.json: each of \"lights\" needs a \"type\" (known: point)");
-    CHECK(errorOf(R"({"lights":[{"type":7}]})") == "s.json: each of \"lights\" needs a \"type\" (known: point)");
-    CHECK(errorOf(R"({"lights":[{"type":"point","position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
-    CHECK(errorOf(R"({"lights":{"type":"point"}})") == "s.json: \"lights\" must be an array");
-    CHECK(errorOf(R"({"lights":["point"]})") == "s.json: each of \"lights\" must be an object");
+    CHECK(descriptionError(R"({"lights":[{"type":7}]})") == "s.json: each of \"lights\" needs a \"type\" (known: point)");
+    CHECK(descriptionError(R"({"lights":[{"type":"point","position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
+    CHECK(descriptionError(R"({"lights":{"type":"point"}})") == "s.json: \"lights\" must be an array");
+    CHECK(descriptionError(R"({"lights":["point"]})") == "s.json: each of \"lights\" must be an object");
 }
 
 TEST_CASE("scene description: a camera file must give the camera, and lends only its point_lights") {
     const SceneDescription camera = parseCameraFile(
-        "{" + kPose + R"(,"width":8,"lights":[{"type":"point","position":[1,1,1],"intensity":[1,1,1]}],)"
+        "{" + kPoseFromOrigin + R"(,"width":8,"lights":[{"type":"point","position":[1,1,1],"intensity":[1,1,1]}],)"
         R"("point_lights":[{"position":[2,2,2],"intensity":[3,3,3]}]})",
         "cam.json");
     CHECK(camera.hasPose);
@@ -97,7 +97,7 @@ TEST_CASE("scene description: a camera file must give the camera, and lends only
     CHECK_THROWS_WITH_AS(parseCameraFile(R"({"width":8})", "cam.json"),
                          "cam.json: missing key \"position\"", Error);
     // Its lights are not read, so a type only a later version knows is no error there.
-    CHECK_NOTHROW(parseCameraFile("{" + kPose + R"(,"lights":[{"type":"spot"}]})", "cam.json"));
+    CHECK_NOTHROW(parseCameraFile("{" + kPoseFromOrigin + R"(,"lights":[{"type":"spot"}]})", "cam.json"));
 }
 
 TEST_CASE("scene description: the environment is none, a colour or a map file that travels with it") {
@@ -120,14 +120,14 @@ TEST_CASE("scene description: the environment is none, a colour or a map file th
 TEST_CASE("scene description: a bad environment names the file and the key") {
     const std::string forms =
         R"(s.json: "environment" must be "none", {"color": [r,g,b]} or {"file": "sky.exr", "rotate": degrees})";
-    CHECK(errorOf(R"({"environment":"sky"})") == forms);
-    CHECK(errorOf(R"({"environment":3})") == forms);
-    CHECK(errorOf(R"({"environment":{}})") == forms);
-    CHECK(errorOf(R"({"environment":{"file":"a.exr","color":[1,1,1]}})") == forms);
-    CHECK(errorOf(R"({"environment":{"color":[1,-1,1]}})") ==
+    CHECK(descriptionError(R"({"environment":"sky"})") == forms);
+    CHECK(descriptionError(R"({"environment":3})") == forms);
+    CHECK(descriptionError(R"({"environment":{}})") == forms);
+    CHECK(descriptionError(R"({"environment":{"file":"a.exr","color":[1,1,1]}})") == forms);
+    CHECK(descriptionError(R"({"environment":{"color":[1,-1,1]}})") ==
           R"(s.json: "environment" "color" must be three radiances >= 0)");
-    CHECK(errorOf(R"({"environment":{"color":[1,1]}})") == R"(s.json: "color" must be an array of 3 numbers)");
-    CHECK(errorOf(R"({"environment":{"file":""}})") == R"(s.json: "environment" "file" must be an EXR file's path)");
-    CHECK(errorOf(R"({"environment":{"file":"a.exr","rotate":"x"}})") ==
+    CHECK(descriptionError(R"({"environment":{"color":[1,1]}})") == R"(s.json: "color" must be an array of 3 numbers)");
+    CHECK(descriptionError(R"({"environment":{"file":""}})") == R"(s.json: "environment" "file" must be an EXR file's path)");
+    CHECK(descriptionError(R"({"environment":{"file":"a.exr","rotate":"x"}})") ==
           R"(s.json: "environment" "rotate" must be a number (degrees))");
 }

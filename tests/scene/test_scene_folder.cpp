@@ -24,11 +24,6 @@ using nlohmann::json;
 
 namespace {
 
-void writeFile(const fs::path& path, const std::string& bytes) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << bytes;
-}
-
 // A model's folder `model/` beside files that are not the model's: `secret.png`, `secret.mtl`
 // and `outside/x.png`, as a render service's other users' files would be.
 struct Folders {
@@ -37,23 +32,23 @@ struct Folders {
     fs::path secret;
     explicit Folders(const std::string& name)
         : root(test::scratchDir(name)), model(root / "model"), secret(root / "secret.png") {
-        writeFile(secret, "SECRET-BYTES");
-        writeFile(root / "secret.mtl", "newmtl white\nKd 1 1 1\n");
-        writeFile(root / "outside" / "x.png", "OUTSIDE");
-        writeFile(model / "tex.png", "INSIDE");
+        test::writeFile(secret, "SECRET-BYTES");
+        test::writeFile(root / "secret.mtl", "newmtl white\nKd 1 1 1\n");
+        test::writeFile(root / "outside" / "x.png", "OUTSIDE");
+        test::writeFile(model / "tex.png", "INSIDE");
     }
     // The canonical folder, as messages name it.
     std::string folder() const { return fs::canonical(model).string(); }
 };
 
-const char* const kQuad =
+const char* const kWhiteQuadObj =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
     "usemtl white\nf 1/1 2/2 3/3 4/4\n";
 
 // s.obj using s.mtl, whose one texture statement is `statement`.
 void writeObj(const Folders& f, const std::string& statement) {
-    writeFile(f.model / "s.obj", std::string("mtllib s.mtl\n") + kQuad);
-    writeFile(f.model / "s.mtl", "newmtl white\nKd 1 1 1\n" + statement + "\n");
+    test::writeFile(f.model / "s.obj", std::string("mtllib s.mtl\n") + kWhiteQuadObj);
+    test::writeFile(f.model / "s.mtl", "newmtl white\nKd 1 1 1\n" + statement + "\n");
 }
 
 std::string refusal(const Folders& f, const std::string& where, const std::string& reference) {
@@ -64,7 +59,7 @@ std::string refusal(const Folders& f, const std::string& where, const std::strin
 // A glTF triangle in s.gltf whose buffer and image have the URIs given.
 void writeGltf(const Folders& f, const std::string& bufferUri, const std::string& imageUri) {
     const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-    writeFile(f.model / "tri.bin", std::string(reinterpret_cast<const char*>(corners), sizeof corners));
+    test::writeFile(f.model / "tri.bin", std::string(reinterpret_cast<const char*>(corners), sizeof corners));
     const json gltf = {
         {"asset", {{"version", "2.0"}}},
         {"buffers", {{{"byteLength", 36}, {"uri", bufferUri}}}},
@@ -76,7 +71,7 @@ void writeGltf(const Folders& f, const std::string& bufferUri, const std::string
         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", 0}}}}}}},
         {"nodes", {{{"mesh", 0}}}},
         {"scenes", {{{"nodes", {0}}}}}};
-    writeFile(f.model / "s.gltf", gltf.dump());
+    test::writeFile(f.model / "s.gltf", gltf.dump());
 }
 
 bool hasFile(const SceneBundle& bundle, const std::string& bytes) {
@@ -114,7 +109,7 @@ TEST_CASE("scene folder: an MTL's texture by absolute path, by ../ or through a 
 
 TEST_CASE("scene folder: an OBJ's mtllib outside the folder is refused by name") {
     const Folders f("folder-mtllib");
-    writeFile(f.model / "s.obj", std::string("mtllib ../secret.mtl\n") + kQuad);
+    test::writeFile(f.model / "s.obj", std::string("mtllib ../secret.mtl\n") + kWhiteQuadObj);
     CHECK_THROWS_WITH_AS(readSceneBundle(f.model / "s.obj"),
                          refusal(f, "s.obj:1: mtllib", "../secret.mtl").c_str(), Error);
 }
@@ -147,7 +142,7 @@ TEST_CASE("scene folder: the description and its environment map are confined an
     const Folders f("folder-description");
     writeObj(f, "");
     const auto describe = [&](const std::string& file) {
-        writeFile(f.model / "s.json", R"({"environment":{"file":")" + file + R"("}})");
+        test::writeFile(f.model / "s.json", R"({"environment":{"file":")" + file + R"("}})");
     };
     describe("/dev/zero");
     CHECK_THROWS_WITH_AS(readSceneBundle(f.model / "s.obj"),
@@ -201,7 +196,7 @@ TEST_CASE("scene folder: a missing texture inside stays a warning, and the scene
 TEST_CASE("scene folder: a buffer of another file's bytes never shows them: an index error names its position") {
     const Folders f("folder-buffer-bytes");
     const std::string passwd = "root:x:0:0:root:/root:/bin/bash\n";
-    writeFile(f.root / "passwd", passwd);
+    test::writeFile(f.root / "passwd", passwd);
     const auto gltf = [&](const std::string& uri, size_t length) {
         // Positions from a data: buffer, indices (UNSIGNED_INT) over the other file's bytes.
         const json model = {
@@ -218,7 +213,7 @@ TEST_CASE("scene folder: a buffer of another file's bytes never shows them: an i
             {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
             {"nodes", {{{"mesh", 0}}}},
             {"scenes", {{{"nodes", {0}}}}}};
-        writeFile(f.model / "s.gltf", model.dump());
+        test::writeFile(f.model / "s.gltf", model.dump());
     };
     gltf((f.root / "passwd").string(), passwd.size());
     CHECK_THROWS_WITH_AS(readSceneBundle(f.model / "s.gltf"),

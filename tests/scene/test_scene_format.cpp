@@ -14,7 +14,7 @@ using namespace strata;
 
 namespace {
 
-std::string errorOf(const std::filesystem::path& path) {
+std::string formatError(const std::filesystem::path& path) {
     try {
         sceneFormatOf(path);
     } catch (const Error& e) {
@@ -56,10 +56,10 @@ TEST_CASE("scene formats: the extension picks the format, in any case") {
 }
 
 TEST_CASE("scene formats: an unknown extension is one line naming the file, it and the known ones") {
-    CHECK(errorOf("model.fbx") == "model.fbx: unknown scene format '.fbx' (known: .obj, .gltf, .glb)");
-    CHECK(errorOf("dir/model.FBX") == "dir/model.FBX: unknown scene format '.FBX' (known: .obj, .gltf, .glb)");
-    CHECK(errorOf("model.obj.bak") == "model.obj.bak: unknown scene format '.bak' (known: .obj, .gltf, .glb)");
-    CHECK(errorOf("model") == "model: no extension to tell the scene format (known: .obj, .gltf, .glb)");
+    CHECK(formatError("model.fbx") == "model.fbx: unknown scene format '.fbx' (known: .obj, .gltf, .glb)");
+    CHECK(formatError("dir/model.FBX") == "dir/model.FBX: unknown scene format '.FBX' (known: .obj, .gltf, .glb)");
+    CHECK(formatError("model.obj.bak") == "model.obj.bak: unknown scene format '.bak' (known: .obj, .gltf, .glb)");
+    CHECK(formatError("model") == "model: no extension to tell the scene format (known: .obj, .gltf, .glb)");
 
     // Refused before any parsing: this file would fail as an OBJ with a message of its own.
     const auto dir = test::scratchDir("scene-format-unknown");

@@ -24,12 +24,12 @@ void writeQuadScene(const std::filesystem::path& dir, const std::string& descrip
     if (!description.empty()) std::ofstream(dir / "s.json") << description;
 }
 
-const char* kPose = R"("position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60)";
+const char* kPoseOverQuad = R"("position":[0.5,1,-1],"look_at":[0.5,0,0.5],"up":[0,1,0],"fov_y":60)";
 
 }  // namespace
 
 TEST_CASE("scene loader: files read once then parsed give the scene loadScene gives") {
-    const auto obj = test::sourceDir() / "assets/cornell/cornell.obj";
+    const auto obj = test::cornellScene();
     const SceneBundle files = readSceneBundle(obj);
     REQUIRE(files.files.size() == 2);
     CHECK(files.files[1].name == "cornell.mtl");
@@ -51,14 +51,14 @@ TEST_CASE("scene loader: a missing scene or camera file is named when reading") 
     const auto dir = test::scratchDir("scene-files");
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "absent.obj"),
                          doctest::Contains("absent.obj: no such scene file"), Error);
-    CHECK_THROWS_WITH_AS(readSceneBundle(test::sourceDir() / "assets/cornell/cornell.obj",
+    CHECK_THROWS_WITH_AS(readSceneBundle(test::cornellScene(),
                                         dir / "absent.json"),
                          doctest::Contains("absent.json: cannot open camera file"), Error);
 }
 
 TEST_CASE("scene loader: the lights are the scene description's, with or without --camera") {
     const auto dir = test::scratchDir("scene-lights");
-    writeQuadScene(dir, std::string("{") + kPose +
+    writeQuadScene(dir, std::string("{") + kPoseOverQuad +
                             R"(,"lights":[{"type":"point","position":[0,1,0],"intensity":[1,1,1]}],)"
                             R"("point_lights":[{"position":[0,2,0],"intensity":[2,2,2]}]})");
     std::ofstream(dir / "cam.json")
@@ -152,7 +152,7 @@ void writeSkyScene(const std::filesystem::path& dir, const std::string& descript
     std::ofstream(dir / "s.obj") << "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl grey\n"
                                     "f 1 3 2\nf 1 4 3\n";
     std::ofstream(dir / "s.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
-    std::ofstream(dir / "s.json") << std::string("{") + kPose + R"(,"width":8,"height":8)" + description + "}";
+    std::ofstream(dir / "s.json") << std::string("{") + kPoseOverQuad + R"(,"width":8,"height":8)" + description + "}";
     Image sky{8, 4, std::vector<glm::vec3>(32)};
     for (int i = 0; i < 32; ++i) sky.pixels[i] = glm::vec3(0.25f * (i % 8), 0.5f, 1.0f);
     std::filesystem::create_directories(dir / "maps");
@@ -235,7 +235,7 @@ TEST_CASE("scene loader: a description's environment file that is missing or not
 }
 
 TEST_CASE("scene loader: parseScene names its stages as they begin, and one that throws ends it there") {
-    const SceneBundle bundle = readSceneBundle(test::sourceDir() / "assets/cornell/cornell.obj");
+    const SceneBundle bundle = readSceneBundle(test::cornellScene());
     std::vector<ParseStage> stages;
     const LoadedScene loaded =
         parseScene(bundle, Traversal::Automatic, {}, [&](ParseStage stage) { stages.push_back(stage); });

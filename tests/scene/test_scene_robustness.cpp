@@ -77,7 +77,7 @@ TEST_CASE("scene robustness: the closed furnace gives its exact value wherever i
 }
 
 TEST_CASE("scene robustness: the Cornell box renders the same image wherever it is placed, every estimator") {
-    const LoadedScene cornell = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene cornell = loadScene(test::cornellScene());
     constexpr int kSize = 12;
     constexpr uint32_t kPasses = 16;
     const Camera camera(cornell.settings.pose, kSize, kSize);

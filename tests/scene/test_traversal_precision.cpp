@@ -86,7 +86,7 @@ TEST_CASE("traversal precision: the fast test lets fewer rays through a closed m
 }
 
 TEST_CASE("traversal precision: scenes near the origin take the fast test, far or with slivers the watertight one") {
-    const LoadedScene cornell = loadScene(test::sourceDir() / "assets/cornell/cornell.obj");
+    const LoadedScene cornell = loadScene(test::cornellScene());
     const LoadedScene furnace = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
     CHECK_FALSE(cornell.scene.summary().watertight);
     CHECK_FALSE(furnace.scene.summary().watertight);

@@ -14,8 +14,6 @@ using namespace strata;
 
 namespace {
 const auto kFurnace = [] { return test::sourceDir() / "assets" / "furnace" / "furnace.obj"; };
-const auto kCornell = [] { return test::sourceDir() / "assets" / "cornell" / "cornell.obj"; };
-
 PathIntegratorSettings depth(int k) {
     PathIntegratorSettings settings;
     settings.depth = k;
@@ -34,7 +32,7 @@ TEST_CASE("reference cache: the furnace is analytic, with notes section 5.1's va
     outside.position = glm::vec3(0.0f, 0.0f, 5.0f);
     CHECK_FALSE(furnaceRadiance(furnace.scene, outside, depth(5)));
 
-    const LoadedScene cornell = loadScene(kCornell());
+    const LoadedScene cornell = loadScene(test::cornellScene());
     CHECK_FALSE(furnaceRadiance(cornell.scene, cornell.settings.pose, depth(5)));
 }
 
@@ -78,7 +76,7 @@ TEST_CASE("reference cache: the key changes with the files, camera and depth, an
 
 TEST_CASE("reference cache: the key changes with the sky the scene is lit by") {
     const auto keyUnder = [](const Environment& sky) {
-        LoadedScene loaded = loadScene(test::sourceDir() / "assets" / "cornell" / "cornell.obj");
+        LoadedScene loaded = loadScene(test::cornellScene());
         const uint64_t dark = referenceKey(loaded, Camera(loaded.settings.pose, 16, 16), depth(5));
         loaded.scene.setEnvironment(sky);
         return std::pair{dark, referenceKey(loaded, Camera(loaded.settings.pose, 16, 16), depth(5))};

@@ -50,8 +50,6 @@ LoadRequest sceneRequest(const std::filesystem::path& path) {
     return {LoadRequest::Kind::Scene, path, Traversal::Automatic, SceneBudget{}, SceneReadOptions{}};
 }
 
-const std::filesystem::path kCornell = test::sourceDir() / "assets/cornell/cornell.obj";
-
 }  // namespace
 
 TEST_CASE("load worker threads: a scene loads through its stages on the loading thread") {
@@ -59,14 +57,14 @@ TEST_CASE("load worker threads: a scene loads through its stages on the loading 
     LoadWorker loader;
     loader.setNotifyCallback([&] { log.add(loader); });
     CHECK(!loader.progress());
-    loader.start(sceneRequest(kCornell));
+    loader.start(sceneRequest(test::cornellScene()));
     CHECK(loader.progress());  // at once, before the load has begun or while it runs
     const LoadOutcome outcome = outcomeOf(loader);
     REQUIRE(outcome.scene);
     CHECK(outcome.error.empty());
     CHECK(!outcome.cancelled);
     CHECK(outcome.scene->scene.summary().triangles == 32);
-    CHECK(outcome.request.path == kCornell);
+    CHECK(outcome.request.path == test::cornellScene());
     CHECK(!loader.progress());
     CHECK(!loader.take());  // taken once
     std::lock_guard lock(log.mutex);
@@ -81,7 +79,7 @@ TEST_CASE("load worker threads: a cancel takes effect at the next stage and buil
         const auto progress = loader.progress();
         if (progress && std::string(progress->stage) == "parsing") loader.cancel();  // as the Cancel button
     });
-    loader.start(sceneRequest(kCornell));
+    loader.start(sceneRequest(test::cornellScene()));
     const LoadOutcome outcome = outcomeOf(loader);
     CHECK(outcome.cancelled);
     CHECK(!outcome.scene);
@@ -102,7 +100,7 @@ TEST_CASE("load worker threads: a newer request supersedes the load in flight, w
             waiting = loader.progress()->stage;
         }
     });
-    loader.start(sceneRequest(kCornell));
+    loader.start(sceneRequest(test::cornellScene()));
     const LoadOutcome outcome = outcomeOf(loader);
     REQUIRE(outcome.scene);
     CHECK(outcome.request.path == dir / "quad.obj");
@@ -136,7 +134,7 @@ TEST_CASE("load worker threads: a failing load is its one line, and a map loads 
 
 TEST_CASE("load worker threads: a scene over the request's triangle budget is refused before it is built") {
     LoadWorker loader;
-    LoadRequest request = sceneRequest(kCornell);
+    LoadRequest request = sceneRequest(test::cornellScene());
     request.budget = SceneBudget{31};  // the box has 32
     loader.start(request);
     const LoadOutcome refused = outcomeOf(loader);
@@ -157,7 +155,7 @@ TEST_CASE("load worker threads: going away mid-load cancels it and waits for its
             const auto progress = loader.progress();
             if (progress && std::string(progress->stage) == "parsing") parsing = true;
         });
-        loader.start(sceneRequest(kCornell));
+        loader.start(sceneRequest(test::cornellScene()));
         while (!parsing) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }  // no crash, no hang: the destructor joined the thread
     CHECK(parsing);
@@ -170,9 +168,9 @@ TEST_CASE("load worker threads: a cancel before the load has begun ends it at on
     std::unique_lock hold(gate);
     LoadWorker loader;
     loader.setNotifyCallback([&] { std::lock_guard wait(gate); });
-    loader.start(sceneRequest(kCornell));
+    loader.start(sceneRequest(test::cornellScene()));
     while (std::string(loader.progress()->stage) != "reading files") std::this_thread::yield();
-    loader.start(sceneRequest(kCornell.parent_path() / "second.obj"));
+    loader.start(sceneRequest(test::cornellScene().parent_path() / "second.obj"));
     CHECK(std::string(loader.progress()->stage) == "waiting");
     loader.cancel();
     const auto outcome = loader.take();

@@ -180,7 +180,7 @@ TEST_CASE("render worker: without a reference its two curves stand in the ratio 
     // within one render is its error; the ratio of the two sides' is what the plots compare. The
     // errors, measured: the spread of the means of renders with other seeds.
     WorkerConfig config;
-    config.scene = std::make_shared<const LoadedScene>(loadScene(test::sourceDir() / "assets/cornell/cornell.obj"));
+    config.scene = std::make_shared<const LoadedScene>(loadScene(test::cornellScene()));
     config.pose = config.scene->settings.pose;
     config.width = config.height = 8;
     config.sides = {SideConfig{SamplerKind::Uniform, 5}, SideConfig{SamplerKind::Strata24, 5}};

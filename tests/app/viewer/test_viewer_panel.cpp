@@ -25,8 +25,6 @@ namespace {
 // The panel and, right of it, an image 480 pixels wide.
 constexpr int kWidth = static_cast<int>(kPanelWidth) + 480, kHeight = 720;
 
-const std::filesystem::path kCornell = test::sourceDir() / "assets/cornell/cornell.obj";
-
 struct Harness {
     int width, height;
     std::unique_ptr<OffscreenContext> context = OffscreenContext::create(OffscreenBackend::OsMesa);
@@ -34,7 +32,7 @@ struct Harness {
     ImGuiSession imgui;
     Viewer viewer;
 
-    explicit Harness(const ViewerSettings& settings, const std::filesystem::path& scene = kCornell,
+    explicit Harness(const ViewerSettings& settings, const std::filesystem::path& scene = test::cornellScene(),
                      int width = kWidth, int height = kHeight)
         : width(width),
           height(height),
@@ -265,7 +263,7 @@ TEST_CASE("an opened .exr becomes the environment map, and a bad one leaves the 
                                            ": an environment map must be a latitude-longitude image", 0) == 0);
     CHECK(h.viewer.panel().message().find('\n') == std::string::npos);
     // The chosen environment lights the scenes opened after it.
-    h.open(kCornell);
+    h.open(test::cornellScene());
     CHECK(h.viewer.workerConfig().scene->scene.lights().maxRadianceAtInfinity() == 0.5f);
     h.waitFor([](const WorkerSnapshot& s) { return s.spp >= 1 && s.error.empty(); });
 }
@@ -532,7 +530,7 @@ TEST_CASE("at 1280x720 the panel lies beside the image: no panel pixel covers th
     settings.split = false;
     settings.resolutionScale = 0.25f;
     settings.targetSpp = 24;
-    Harness h(settings, kCornell, 1280, 720);
+    Harness h(settings, test::cornellScene(), 1280, 720);
     h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 24; });
     h.frame();
     const Viewport area = h.viewer.imageArea();
@@ -605,7 +603,7 @@ TEST_CASE("at 1280x720 the split view's plots and the load line fit in the windo
     settings.resolutionScale = 0.125f;
     settings.threads = 1;
     settings.targetSpp = 72;  // three passes: two points a curve
-    Harness h(settings, kCornell, 1280, 720);
+    Harness h(settings, test::cornellScene(), 1280, 720);
     h.waitFor([](const WorkerSnapshot& s) { return s.idle && s.spp == 72; });
     h.frame();
     const auto& controls = h.viewer.panel().controls();
