@@ -120,7 +120,7 @@ TEST_CASE("gltf: quantized positions and normals (KHR_mesh_quantization)") {
     // Normals must be normalized integers: plain bytes are refused.
     model.doc["accessors"][normals]["normalized"] = false;
     CHECK(gltfError(model.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: NORMAL accessor 1 has component "
-                                   "type 5120, which glTF does not allow for it");
+                                     "type 5120, which glTF does not allow for it");
 }
 
 TEST_CASE("gltf: interleaved positions (byteStride), strips and fans as triangles") {
@@ -470,7 +470,7 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
     CHECK(gltfError(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
-                                   "triangles, strips and fans");
+                                     "triangles, strips and fans");
     Model outOfRange = model;
     outOfRange.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
     CHECK(gltfError(outOfRange.gltf()) ==
@@ -479,7 +479,7 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     shortView.doc["accessors"][0]["count"] = 4;
     shortView.meshNode({{"attributes", {{"POSITION", positions}}}});
     CHECK(gltfError(shortView.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: POSITION accessor 0: "
-                                       "4 elements run past the end of bufferView 0");
+                                         "4 elements run past the end of bufferView 0");
     Model cycle = model;
     cycle.doc["nodes"] = json::array({{{"children", {1}}}, {{"children", {0}}}});
     cycle.doc["scenes"] = json::array({{{"nodes", {0}}}});

@@ -54,8 +54,8 @@ TEST_CASE("an OBJ's map_Ke and map_Kd texture each quadrant of a quad, and paths
     test::writeFile(dir / "quad.obj", kQuadObj);
     // Windows separators and spaces, relative to the MTL's folder.
     test::writeFile(dir / "mtl" / "quad.mtl",
-              "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Kd -bm 1 -blendu on tex dir\\quad tex.png\n"
-              "map_Ke .\\tex dir\\quad tex.png\n");
+                    "newmtl quad\nKd 0.5 0.5 0.5\nKe 2 2 2\nmap_Kd -bm 1 -blendu on tex dir\\quad tex.png\n"
+                    "map_Ke .\\tex dir\\quad tex.png\n");
     writePng(dir / "mtl" / "tex dir" / "quad tex.png", 2, 2, 3, kQuadrants);
     const LoadedScene loaded = loadScene(dir / "quad.obj");
     CHECK(loaded.report.warnings.empty());
@@ -86,8 +86,8 @@ TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps
     const test::ScratchDir dir = test::scratchDir("obj_bad_textures");
     test::writeFile(dir / "quad.obj", kQuadObj);
     test::writeFile(dir / "mtl" / "quad.mtl",
-              "newmtl quad\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ke broken.png\nbump height.png\n"
-              "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\n");
+                    "newmtl quad\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ke broken.png\nbump height.png\n"
+                    "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\n");
     test::writeFile(dir / "mtl" / "broken.png", "\x89PNG\r\n\x1a\nthis is not a PNG");
     writePng(dir / "mtl" / "height.png", 1, 1, 3, {128, 128, 128});
     writePng(dir / "mtl" / "alpha.png", 1, 1, 1, {255});

@@ -51,8 +51,7 @@ TEST_CASE("scene loader: a missing scene or camera file is named when reading") 
     const auto dir = test::scratchDir("scene-files");
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "absent.obj"),
                          doctest::Contains("absent.obj: no such scene file"), Error);
-    CHECK_THROWS_WITH_AS(readSceneBundle(test::cornellScene(),
-                                        dir / "absent.json"),
+    CHECK_THROWS_WITH_AS(readSceneBundle(test::cornellScene(), dir / "absent.json"),
                          doctest::Contains("absent.json: cannot open camera file"), Error);
 }
 
