@@ -8,6 +8,9 @@
 #include "util/error.h"
 
 namespace strata {
+
+bool isExr(std::string_view bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0; }
+
 namespace {
 
 // The file's bytes as OpenEXR's core reads them, and the first message it gave.

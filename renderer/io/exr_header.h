@@ -13,6 +13,9 @@
 
 namespace strata {
 
+// Whether `bytes` begin with OpenEXR's magic number.
+bool isExr(std::string_view bytes);
+
 // The size of the R, G, B float image readExr (io/image_io.h) reads from the EXR file `bytes`
 // (3 channels of 4 bytes). Throws strata::Error: "NAME: not a readable EXR file (REASON)" for
 // bytes OpenEXR cannot read, a deep image or pixel data the file does not hold, and

@@ -17,7 +17,6 @@ namespace {
 // longest string): no more than 4096 pixels per 1.5 bytes of a frame's data.
 constexpr long long kGifPixelsPerByte = 4096 * 8 / 12 + 1;
 
-bool isExr(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == "\x76\x2f\x31\x01"; }
 bool isPng(std::string_view bytes) { return bytes.size() >= 8 && bytes.substr(0, 8) == "\x89PNG\r\n\x1a\n"; }
 bool isGif(std::string_view bytes) { return bytes.size() >= 6 && bytes.substr(0, 4) == "GIF8"; }
 

@@ -3,19 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <optional>
 
+#include "io/exr_header.h"
 #include "util/error.h"
 #include "util/printable.h"
 
 namespace strata {
 namespace {
-
-// OpenEXR's magic number; only EXR texels can be other than finite and non-negative.
-bool isExr(std::string_view bytes) {
-    return bytes.size() >= 4 && std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) == 0;
-}
 
 // Which components of Texture::texel hold a texture's `channels` channels (texture.h).
 constexpr std::array<std::array<int, 4>, 5> kChannelComponents{{{}, {0}, {0, 3}, {0, 1, 2}, {0, 1, 2, 3}}};
