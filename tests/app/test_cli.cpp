@@ -19,7 +19,6 @@ using namespace strata;
 
 namespace {
 std::string furnace() { return (test::sourceDir() / "assets/furnace/furnace.obj").string(); }
-std::string cornell() { return test::cornellScene().string(); }
 
 int lineCount(const std::string& text) {
     int lines = 0;
@@ -46,7 +45,7 @@ TEST_CASE("cli: the furnace at depth 3, 240 spp reports a mean within 1% of 1.87
 TEST_CASE("cli: --threads 1 and --threads 2 write bit-identical images") {
     const auto dir = test::scratchDir("cli-threads");
     for (const char* threads : {"1", "2"}) {
-        const auto result = test::runStrata("render " + cornell() +
+        const auto result = test::runStrata("render " + test::cornellScene().string() +
                                             " --width 48 --height 32 --spp 48 --depth 4 --threads " +
                                             threads + " --out " + (dir / (std::string(threads) + ".pfm")).string());
         REQUIRE(result.exitCode == 0);
@@ -69,7 +68,7 @@ TEST_CASE("cli: --version prints the version, --help one line per command") {
 TEST_CASE("cli: render with no scene renders the bundled Cornell box, from the source tree in a build") {
     const auto result = test::runStrata("render --width 8 --height 8 --spp 24 --json");
     REQUIRE_MESSAGE(result.exitCode == 0, result.err);
-    CHECK(nlohmann::json::parse(result.out)["scene"] == cornell());
+    CHECK(nlohmann::json::parse(result.out)["scene"] == test::cornellScene().string());
 }
 
 TEST_CASE("cli: bad options and bad files give one line naming them and a non-zero exit") {

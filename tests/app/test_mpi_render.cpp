@@ -24,8 +24,6 @@ std::string mpirun() {
 
 std::string strataBinary() { return STRATA_BINARY; }
 
-std::string cornell() { return test::cornellScene().string(); }
-
 size_t occurrences(const std::string& text, const std::string& part) {
     size_t count = 0;
     for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) {
@@ -52,7 +50,7 @@ std::string lastLineStartingWith(const std::string& text, const std::string& pre
 TEST_CASE("mpi render: 2 ranks give the single-process image and the job's progress") {
     const auto dir = test::scratchDir("mpi-equal");
     // 5 passes: rank 0 renders 3, rank 1 renders 2.
-    const std::string arguments = "render " + cornell() +
+    const std::string arguments = "render " + test::cornellScene().string() +
                                   " --width 24 --height 20 --spp 120 --seed 11 --threads 1 --json";
     const auto single = test::runStrata(arguments + " --out " + (dir / "single.exr").string());
     REQUIRE_MESSAGE(single.exitCode == 0, single.err);
@@ -90,7 +88,7 @@ TEST_CASE("mpi render: 2 ranks give the single-process image and the job's progr
 TEST_CASE("mpi render: a failing rank ends the job with one clear error and no output") {
     const auto dir = test::scratchDir("mpi-fail");
     const auto out = dir / "out.exr";
-    const std::string arguments = "render " + cornell() + " --width 8 --height 8 --spp 48 --out " +
+    const std::string arguments = "render " + test::cornellScene().string() + " --width 8 --height 8 --spp 48 --out " +
                                   out.string();
 
     // Rank 1 alone fails (its own options differ: Open MPI's MPMD form A : B).
@@ -153,7 +151,7 @@ TEST_CASE("mpi render: every rank lights the scene by the --env map rank 0 read,
 TEST_CASE("mpi render: a killed rank ends the job without an output file") {
     const auto dir = test::scratchDir("mpi-kill");
     // Far more work than any machine does in the 2 s before rank 1 is killed.
-    const std::string arguments = "render " + cornell() +
+    const std::string arguments = "render " + test::cornellScene().string() +
                                   " --width 128 --height 128 --spp 24000 --threads 1 --out " +
                                   (dir / "out.exr").string();
     const auto killed =

@@ -19,7 +19,7 @@ using namespace strata;
 
 namespace {
 
-const LoadedScene& cornell() {
+const LoadedScene& loadedCornell() {
     static const LoadedScene loaded = loadScene(test::cornellScene());
     return loaded;
 }
@@ -37,8 +37,8 @@ RenderSettings strata24(int depth, uint64_t seed, int threads) {
 }  // namespace
 
 TEST_CASE("render session: a budget in spp stops exactly, inside a pass too") {
-    const Camera camera(cornell().settings.pose, 9, 7);
-    RenderSession session(cornell().scene, camera, strata24(3, 11, 2));
+    const Camera camera(loadedCornell().settings.pose, 9, 7);
+    RenderSession session(loadedCornell().scene, camera, strata24(3, 11, 2));
     session.run({2 * kPathsPerPass + 5});
     CHECK(session.spp() == 2 * kPathsPerPass + 5);
     CHECK(session.completedPasses() == 2);
@@ -58,8 +58,8 @@ TEST_CASE("render session: a budget in spp stops exactly, inside a pass too") {
 }
 
 TEST_CASE("render session: a budget in seconds stops after the pass that reaches it") {
-    const Camera camera(cornell().settings.pose, 16, 16);
-    RenderSession session(cornell().scene, camera, strata24(2, 3, 1));
+    const Camera camera(loadedCornell().settings.pose, 16, 16);
+    RenderSession session(loadedCornell().scene, camera, strata24(2, 3, 1));
     constexpr double kBudget = 0.05;
     std::vector<double> secondsAtPass;
     session.run({0, kBudget}, [&](const PassReport&) { secondsAtPass.push_back(session.renderSeconds()); });
@@ -98,8 +98,8 @@ TEST_CASE("render session: a noise budget stops at the pass that finishes the la
 }
 
 TEST_CASE("render session: a cancel from the progress callback stops before the next pass") {
-    const Camera camera(cornell().settings.pose, 12, 12);
-    RenderSession session(cornell().scene, camera, strata24(2, 1, 2));
+    const Camera camera(loadedCornell().settings.pose, 12, 12);
+    RenderSession session(loadedCornell().scene, camera, strata24(2, 1, 2));
     std::atomic<bool> cancel{false};
     session.run({}, [&](const PassReport& report) { cancel = report.passes == 3; }, &cancel);
     CHECK(session.completedPasses() == 3);
@@ -114,8 +114,8 @@ TEST_CASE("render session threads: a cancel from another thread stops the pass i
     // and skips the rest, so at most one tile's paths follow it, wherever in a pass it comes.
     constexpr int kSize = 256;
     constexpr uint64_t kTilePaths = 16 * 16 * kPathsPerPass;
-    const Camera camera(cornell().settings.pose, kSize, kSize);
-    RenderSession session(cornell().scene, camera, strata24(5, 2, 1));
+    const Camera camera(loadedCornell().settings.pose, kSize, kSize);
+    RenderSession session(loadedCornell().scene, camera, strata24(5, 2, 1));
     std::atomic<bool> cancel{false};
     uint64_t pathsAtCancel = 0;
     std::thread canceller([&] {
@@ -133,8 +133,8 @@ TEST_CASE("render session threads: a cancel from another thread stops the pass i
 }
 
 TEST_CASE("render session: the progress callback reports every pass, its index and its paths") {
-    const Camera camera(cornell().settings.pose, 10, 4);
-    RenderSession session(cornell().scene, camera, strata24(2, 9, 2), {3, 9});
+    const Camera camera(loadedCornell().settings.pose, 10, 4);
+    RenderSession session(loadedCornell().scene, camera, strata24(2, 9, 2), {3, 9});
     session.renderSteps(5);  // a pass begun in steps is reported whole when run completes it
     std::vector<PassReport> reports;
     session.run({5 * kPathsPerPass}, [&](const PassReport& report) { reports.push_back(report); });
@@ -154,18 +154,18 @@ TEST_CASE("render session: the progress callback reports every pass, its index a
 }
 
 TEST_CASE("render session: a pass range renders exactly those passes, and two ranges add up to the whole") {
-    const Camera camera(cornell().settings.pose, 13, 11);
+    const Camera camera(loadedCornell().settings.pose, 13, 11);
     const RenderSettings settings = strata24(3, 21, 2);
-    RenderSession first(cornell().scene, camera, settings, {0, 3});
-    RenderSession second(cornell().scene, camera, settings, {3, 7});
-    RenderSession whole(cornell().scene, camera, settings, {0, 7});
+    RenderSession first(loadedCornell().scene, camera, settings, {0, 3});
+    RenderSession second(loadedCornell().scene, camera, settings, {3, 7});
+    RenderSession whole(loadedCornell().scene, camera, settings, {0, 7});
     for (RenderSession* session : {&first, &second, &whole}) session->run({});
     CHECK(first.completedPasses() == 3);
     CHECK(second.completedPasses() == 4);
 
     // The second range holds passes 3..6 exactly, as the renderer renders them.
     AccumulationBuffer passes(13, 11);
-    ProgressiveRenderer renderer(cornell().scene, camera, settings);
+    ProgressiveRenderer renderer(loadedCornell().scene, camera, settings);
     for (uint32_t pass = 3; pass < 7; ++pass) renderer.renderPass(passes, pass);
     CHECK(test::differingPixels(second.buffer(), passes) == 0);
 
@@ -196,17 +196,17 @@ TEST_CASE("render session: a pass range renders exactly those passes, and two ra
 
 TEST_CASE("render session: whole passes, steps, groups of steps and bands give bit-identical buffers") {
     // Adaptive sampling on, so that the mask (which changes between passes only) is cut the same way.
-    const Camera camera(cornell().settings.pose, 21, 17);
+    const Camera camera(loadedCornell().settings.pose, 21, 17);
     RenderSettings settings = strata24(3, 77, 2);
     settings.adaptive.threshold = 0.3;
     settings.adaptive.minPasses = 2;
     const RenderBudget budget{6 * kPathsPerPass};
-    RenderSession whole(cornell().scene, camera, settings);
+    RenderSession whole(loadedCornell().scene, camera, settings);
     whole.run(budget);
-    RenderSession stepwise(cornell().scene, camera, settings);
+    RenderSession stepwise(loadedCornell().scene, camera, settings);
     while (!stepwise.finished(budget)) stepwise.renderSteps(1);
     // Uneven groups in uneven bands, as the viewer's worker cuts them.
-    RenderSession grouped(cornell().scene, camera, settings);
+    RenderSession grouped(loadedCornell().scene, camera, settings);
     const int groups[] = {1, 5, 11, 7};
     int bandsUsed = 0;
     for (size_t i = 0; !grouped.finished(budget); ++i) {
