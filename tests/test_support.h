@@ -64,6 +64,8 @@ struct CommandResult {
 std::string fileBytes(const std::filesystem::path& path);
 // Writes `bytes` to `path`, creating its folder.
 void writeFile(const std::filesystem::path& path, const std::string& bytes);
+// How many newline characters `text` holds.
+int lineCount(const std::string& text);
 // The names of the folder's entries (to check that nothing was left behind in it).
 std::set<std::string> folderEntries(const std::filesystem::path& dir);
 // An RLE true-colour TGA of 26 bytes whose header claims 2608 x 29814 texels at 32 bits: stb

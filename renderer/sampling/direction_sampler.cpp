@@ -11,7 +11,7 @@ struct SamplerEntry {
     SamplerKind kind;
     SamplerChoice choice;
 };
-constexpr std::array<SamplerEntry, 8> kChoices{{
+constexpr std::array<SamplerEntry, kSamplerKinds.size()> kChoices{{
     {SamplerKind::Uniform, {PointSet::Independent, DiffuseWarp::Uniform}},
     {SamplerKind::Strata24, {PointSet::Independent, DiffuseWarp::Strata24}},
     {SamplerKind::Cosine, {PointSet::Independent, DiffuseWarp::Cosine}},
@@ -29,7 +29,7 @@ static_assert([] {
     return true;
 }());
 
-constexpr NameTable<SamplerKind, 8> kSamplers{{{{"uniform", SamplerKind::Uniform},
+constexpr NameTable<SamplerKind, kSamplerKinds.size()> kSamplers{{{{"uniform", SamplerKind::Uniform},
                                                 {"strata24", SamplerKind::Strata24},
                                                 {"cosine", SamplerKind::Cosine},
                                                 {"strata24-cosine", SamplerKind::Strata24Cosine},

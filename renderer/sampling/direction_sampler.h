@@ -22,6 +22,7 @@
 //   bsdf            - the BSDF's own importance sampling with independent points: its diffuse
 //                     lobe by cosine, as `cosine`.
 // All are unbiased for every path, so a partial pass is an unbiased estimate.
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,6 +34,10 @@
 namespace strata {
 
 enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Strata24CosineQmc, Strata24Bsdf, Bsdf };
+// Every kind, in the enum's order.
+inline constexpr std::array<SamplerKind, 8> kSamplerKinds{
+    SamplerKind::Uniform,     SamplerKind::Strata24,          SamplerKind::Cosine,       SamplerKind::Strata24Cosine,
+    SamplerKind::Strata24Qmc, SamplerKind::Strata24CosineQmc, SamplerKind::Strata24Bsdf, SamplerKind::Bsdf};
 
 // The points a sampler draws for the diffuse lobe at a bounce: independent uniform points (with
 // the schedule's stratum for a stratified warp), or each stratum's Sobol' sequence over the passes.

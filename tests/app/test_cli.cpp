@@ -20,12 +20,6 @@ using namespace strata;
 namespace {
 std::string furnace() { return (test::sourceDir() / "assets/furnace/furnace.obj").string(); }
 
-int lineCount(const std::string& text) {
-    int lines = 0;
-    for (char c : text) lines += c == '\n' ? 1 : 0;
-    return lines;
-}
-
 }  // namespace
 
 TEST_CASE("cli: the furnace at depth 3, 240 spp reports a mean within 1% of 1.875") {
@@ -57,7 +51,7 @@ TEST_CASE("cli: --version prints the version, --help one line per command") {
     const auto version = test::runStrata("--version");
     REQUIRE(version.exitCode == 0);
     CHECK(version.out.rfind("strata ", 0) == 0);
-    CHECK(lineCount(version.out) == 1);
+    CHECK(test::lineCount(version.out) == 1);
     const auto help = test::runStrata("--help");
     REQUIRE(help.exitCode == 0);
     for (const char* command : {"bench", "render", "samples", "view"}) {
@@ -104,7 +98,7 @@ TEST_CASE("cli: bad options and bad files give one line naming them and a non-ze
         INFO("strata " << c.arguments << "\n-> exit " << result.exitCode << ", stderr: " << result.err);
         CHECK(result.exitCode != 0);
         CHECK(result.exitCode < 128);  // an exit, not a crash
-        CHECK(lineCount(result.err) == 1);
+        CHECK(test::lineCount(result.err) == 1);
         CHECK(result.err.find(c.mentions) != std::string::npos);
     }
 }
@@ -354,7 +348,7 @@ TEST_CASE("cli: usage errors exit 2, input errors 1, and a mistyped option is na
         const auto result = test::runStrata(c.arguments);
         INFO("strata " << c.arguments << "\n-> exit " << result.exitCode << ", stderr: " << result.err);
         CHECK(result.exitCode == c.exitCode);
-        CHECK(lineCount(result.err) == 1);
+        CHECK(test::lineCount(result.err) == 1);
         CHECK(result.err.find(c.says) != std::string::npos);
     }
     // --help says so.

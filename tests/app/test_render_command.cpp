@@ -20,8 +20,6 @@ namespace {
 // A small render of the bundled Cornell box.
 const std::string kRender = "render --width 8 --height 8 --spp 24";
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
-
 }  // namespace
 
 TEST_CASE("render: symlinks planted at every temporary name of its outputs are left alone") {
@@ -92,7 +90,7 @@ TEST_CASE("render: an output that cannot be written fails before rendering, one 
         CAPTURE(result.err);
         CHECK(result.exitCode == c.exitStatus);
         // One line: nothing was read (no scene line) or rendered (no progress) before it.
-        CHECK(lineCount(result.err) == 1);
+        CHECK(test::lineCount(result.err) == 1);
         CHECK(result.err == "strata: " + c.expected + "\n");
         CHECK(test::fileBytes(dir / "keep.exr") == precious);
         CHECK(test::folderEntries(dir) == before);

@@ -23,7 +23,6 @@ double furnaceValue(int depth) { return (1.0 - std::pow(0.5, depth + 1)) / 0.5; 
 // Lambert (notes 5.2): irradiance at the origin (normal +z) from the unit square [-1/2,1/2]^2 at
 // height 1, emitting radiance 1 downwards: E/L = 0.752274688454; from the 2 x 2 square
 // [-1,1]^2 at height 1 (2 pi / 3 sr): E/L = 1.740839502734.
-constexpr double kLambertSquareIrradiance = 0.752274688454;
 constexpr double kLambertLargeSquareIrradiance = 1.740839502734;
 constexpr float kReceiverAlbedo = 0.8f;
 
@@ -92,7 +91,7 @@ TEST_CASE("integrator: the furnace gives Le (1 - rho^(K+1)) / (1 - rho) for K = 
 }
 
 TEST_CASE("integrator: Lambert's polygon irradiance for both samplers, strata24 with less variance") {
-    const double exact = kReceiverAlbedo * kLambertSquareIrradiance / M_PI;
+    const double exact = kReceiverAlbedo * test::kLambertSquareIrradiance / M_PI;
     constexpr int kPasses = 20000;
     const auto uniform = test::estimateMean(lambertPassMeans(SamplerKind::Uniform, kPasses));
     const auto strata = test::estimateMean(lambertPassMeans(SamplerKind::Strata24, kPasses));

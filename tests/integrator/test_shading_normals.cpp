@@ -58,9 +58,7 @@ const Ray kFromAbove{{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}};
 TEST_CASE("shading normals: a plane with tilted normals receives pi (1 + cos 60) / 2 from the sky, every sampler") {
     const Scene scene(tiltedPlane(test::uniformSky(1.0f)));
     const double exact = kAlbedo * (1.0 + 0.5) / 2.0;  // rho / pi * pi (1 + cos beta) / 2
-    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
-                                SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc,
-                                SamplerKind::Strata24CosineQmc, SamplerKind::Strata24Bsdf, SamplerKind::Bsdf}) {
+    for (SamplerKind sampler : kSamplerKinds) {
         for (bool nee : {false, true}) {
             CAPTURE(samplerName(sampler));
             CAPTURE(nee);

@@ -19,10 +19,6 @@ using namespace strata;
 
 namespace {
 
-constexpr SamplerKind kAllSamplers[] = {SamplerKind::Uniform,     SamplerKind::Strata24,          SamplerKind::Cosine,
-                                        SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc, SamplerKind::Strata24CosineQmc,
-                                        SamplerKind::Strata24Bsdf, SamplerKind::Bsdf};
-
 Material glass(float roughness = 0.0f) {
     Material m;
     m.name = "glass";
@@ -110,7 +106,7 @@ TEST_CASE("specular transport: a mirror under a uniform sky reads its Fresnel re
         test::addQuad(mesh, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, 0);
         mesh.environment = test::uniformSky(1.0f);
         const Scene scene(std::move(mesh));
-        for (SamplerKind sampler : kAllSamplers) {
+        for (SamplerKind sampler : kSamplerKinds) {
             for (bool nee : {false, true}) {
                 const PathIntegrator integrator(scene, {4, sampler, nee, kRouletteDepthDefault});
                 uint64_t rays = 0;
@@ -186,7 +182,7 @@ TEST_CASE("specular transport: a furnace with smooth glass inside keeps its exac
     const Scene scene(std::move(mesh));
     // Rays from inside the furnace toward the sphere.
     const Ray ray{{-0.6f, -0.5f, -0.7f}, glm::normalize(glm::vec3(0.8f, 0.6f, 1.0f))};
-    for (SamplerKind sampler : kAllSamplers) {
+    for (SamplerKind sampler : kSamplerKinds) {
         for (bool nee : {false, true}) {
             const PathIntegrator integrator(scene, {48, sampler, nee, kRouletteDepthDefault});
             const test::MeanEstimate e = test::estimateMean(test::pixelEstimates(integrator, ray, 150, 2, 7));
@@ -217,7 +213,7 @@ TEST_CASE("specular transport: with rough glass, every sampler with and without 
     const Ray ray{{-0.6f, -0.5f, -0.7f}, glm::normalize(glm::vec3(0.8f, 0.6f, 1.0f))};
     const PathIntegrator reference(scene, {16, SamplerKind::Bsdf, false, kRouletteDepthDefault});
     const test::MeanEstimate ref = test::estimateMean(test::pixelEstimates(reference, ray, 400, 4, 21));
-    for (SamplerKind sampler : kAllSamplers) {
+    for (SamplerKind sampler : kSamplerKinds) {
         for (bool nee : {false, true}) {
             const PathIntegrator integrator(scene, {16, sampler, nee, kRouletteDepthDefault});
             const test::MeanEstimate e = test::estimateMean(test::pixelEstimates(integrator, ray, 200, 2, 23));

@@ -21,11 +21,6 @@ using namespace strata;
 
 namespace {
 
-constexpr SamplerKind kAllSamplers[] = {SamplerKind::Uniform,        SamplerKind::Strata24,
-                                        SamplerKind::Cosine,         SamplerKind::Strata24Cosine,
-                                        SamplerKind::Strata24Qmc,    SamplerKind::Strata24CosineQmc,
-                                        SamplerKind::Strata24Bsdf,
-                                        SamplerKind::Bsdf};
 // A correct estimator fails a 4.5-sigma check with probability 7e-6.
 constexpr double kSigmas = 4.5;
 
@@ -46,7 +41,7 @@ void checkUnbiased(const std::vector<double>& estimates, double exact, const std
 }  // namespace
 
 TEST_CASE("direction sampler: every name parses back to its kind and the list is complete") {
-    for (SamplerKind kind : kAllSamplers) {
+    for (SamplerKind kind : kSamplerKinds) {
         CHECK(parseSamplerKind(samplerName(kind)) == kind);
         CHECK(samplerNames().find(std::string(samplerName(kind))) != std::string::npos);
     }
@@ -80,7 +75,7 @@ TEST_CASE("direction sampler: cosine sampling of the Lambertian furnace has zero
 
 TEST_CASE("direction sampler: every sampler is unbiased on the furnace, with and without NEE") {
     const Scene scene(test::furnaceMesh(lambertian(0.8f, 1.0f)));
-    for (SamplerKind kind : kAllSamplers) {
+    for (SamplerKind kind : kSamplerKinds) {
         for (bool nee : {false, true}) {
             for (int depth : {1, 4}) {
                 const PathIntegrator integrator(scene, {depth, kind, nee});
@@ -99,7 +94,7 @@ TEST_CASE("direction sampler: every sampler is unbiased on Lambert's polygon, wi
     const Scene scene(test::lambertSquareMesh(lambertian(rho)));
     const Ray ray = test::rayToOrigin({0.2f, 0.1f, 0.5f});
     const double exact = rho * test::kLambertSquareIrradiance / M_PI;
-    for (SamplerKind kind : kAllSamplers) {
+    for (SamplerKind kind : kSamplerKinds) {
         for (bool nee : {false, true}) {
             const PathIntegrator integrator(scene, {1, kind, nee});
             const auto estimates = test::pixelEstimates(integrator, ray, 400, 2, 5);
@@ -121,7 +116,7 @@ TEST_CASE("direction sampler: on a glossy receiver all samplers and NEE agree") 
     const PathIntegrator reference(scene, {2, SamplerKind::Uniform, false});
     const test::MeanEstimate ref =
         test::estimateMean(test::pixelEstimates(reference, ray, 400, 8, 11));
-    for (SamplerKind kind : kAllSamplers) {
+    for (SamplerKind kind : kSamplerKinds) {
         for (bool nee : {false, true}) {
             const PathIntegrator integrator(scene, {2, kind, nee});
             const test::MeanEstimate e =
@@ -144,7 +139,7 @@ TEST_CASE("direction sampler: the reported density is the marginal density of th
     const MaterialTable bsdfMaterials({m});
     const Bsdf bsdf = bsdfMaterials.bsdf(0);
     const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f));
-    for (SamplerKind kind : kAllSamplers) {
+    for (SamplerKind kind : kSamplerKinds) {
         int diffuseSamples = 0;
         for (int step = 0; step < 24; ++step) {
             const PathSamples samples(9, 4, 2, step);

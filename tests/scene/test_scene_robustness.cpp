@@ -35,9 +35,7 @@ std::vector<PathIntegratorSettings> estimators(int depth) {
     PathIntegratorSettings defaults = kProgramDefaults;
     defaults.depth = depth;
     std::vector<PathIntegratorSettings> all{defaults};
-    for (SamplerKind sampler : {SamplerKind::Uniform, SamplerKind::Strata24, SamplerKind::Cosine,
-                                SamplerKind::Strata24Cosine, SamplerKind::Strata24Qmc, SamplerKind::Strata24CosineQmc,
-                                SamplerKind::Strata24Bsdf, SamplerKind::Bsdf}) {
+    for (SamplerKind sampler : kSamplerKinds) {
         for (bool nee : {false, true}) all.push_back({depth, sampler, nee, -1});
     }
     return all;
