@@ -35,7 +35,7 @@ namespace strata {
 
 enum class SamplerKind { Uniform, Strata24, Cosine, Strata24Cosine, Strata24Qmc, Strata24CosineQmc, Strata24Bsdf, Bsdf };
 // Every kind, in the enum's order.
-inline constexpr std::array<SamplerKind, 8> kSamplerKinds{
+inline constexpr std::array kSamplerKinds{
     SamplerKind::Uniform,     SamplerKind::Strata24,          SamplerKind::Cosine,       SamplerKind::Strata24Cosine,
     SamplerKind::Strata24Qmc, SamplerKind::Strata24CosineQmc, SamplerKind::Strata24Bsdf, SamplerKind::Bsdf};
 

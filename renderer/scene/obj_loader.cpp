@@ -10,10 +10,10 @@
 #include <set>
 #include <string_view>
 #include <vector>
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
+#include "util/components.h"
 #include "util/error.h"
 #include "materials/microfacet.h"
 #include "materials/normal_map.h"
@@ -421,16 +421,14 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     const std::string at =
         source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
     if (!isFinite(material.diffuse) || !isFinite(material.emission) || !isFinite(material.specular) ||
-        !std::isfinite(material.roughness) ||
-        glm::min(glm::min(material.diffuse.x, material.diffuse.y), material.diffuse.z) < 0.0f ||
-        glm::min(glm::min(material.emission.x, material.emission.y), material.emission.z) < 0.0f ||
-        glm::min(glm::min(material.specular.x, material.specular.y), material.specular.z) < 0.0f) {
+        !std::isfinite(material.roughness) || minComponent(material.diffuse) < 0.0f ||
+        minComponent(material.emission) < 0.0f || minComponent(material.specular) < 0.0f) {
         throw Error(at + " has a negative or non-finite Kd, Ke, Ks or Pr");
     }
-    if (glm::max(glm::max(material.diffuse.x, material.diffuse.y), material.diffuse.z) > 1.0f) {
+    if (maxComponent(material.diffuse) > 1.0f) {
         throw Error(at + " has Kd above 1 (creates energy)");
     }
-    if (glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 1.0f) {
+    if (maxComponent(material.specular) > 1.0f) {
         throw Error(at + " has Ks above 1 (creates energy)");
     }
     if (material.roughness < 0.0f || material.roughness > 1.0f) throw Error(at + " has Pr outside 0..1");
@@ -445,10 +443,10 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
             throw Error(at + " (illum " + std::to_string(m.illum) + ", a dielectric) has an Ni that is not a positive number");
         }
         const glm::vec3& tf = material.transmissionFilter;
-        if (!isFinite(tf) || glm::min(glm::min(tf.x, tf.y), tf.z) < 0.0f || glm::max(glm::max(tf.x, tf.y), tf.z) > 1.0f) {
+        if (!isFinite(tf) || minComponent(tf) < 0.0f || maxComponent(tf) > 1.0f) {
             throw Error(at + " has a Tf outside 0..1");
         }
-    } else if ((m.illum == 3 || m.illum == 5) && glm::max(glm::max(material.specular.x, material.specular.y), material.specular.z) > 0.0f &&
+    } else if ((m.illum == 3 || m.illum == 5) && maxComponent(material.specular) > 0.0f &&
                (source.hasRoughness ? m.roughness == 0.0f : m.shininess >= 10000.0f)) {
         material.roughness = 0.0f;
     }

@@ -5,9 +5,9 @@
 #include <limits>
 #include <string_view>
 #include <utility>
-#include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 
+#include "util/components.h"
 #include "util/error.h"
 #include "util/printable.h"
 
@@ -89,7 +89,7 @@ bool hasPoseKey(const json& root) {
 
 PointLight readPointLight(const json& entry, const std::string& path) {
     const glm::vec3 intensity = readVec3(entry, "intensity", path);
-    if (!(glm::min(glm::min(intensity.x, intensity.y), intensity.z) >= 0.0f)) {
+    if (!(minComponent(intensity) >= 0.0f)) {
         throw Error(path + ": a point light's \"intensity\" must be three values >= 0 (W/sr)");
     }
     return {readVec3(entry, "position", path), intensity};
@@ -145,7 +145,7 @@ void readEnvironment(const json& root, const std::string& path, SceneDescription
     if (entry->contains("color")) {
         environment.kind = Environment::Kind::Uniform;
         environment.radiance = readVec3(*entry, "color", path);
-        if (!(glm::min(glm::min(environment.radiance.x, environment.radiance.y), environment.radiance.z) >= 0.0f)) {
+        if (!(minComponent(environment.radiance) >= 0.0f)) {
             refuse("\"color\" must be three radiances >= 0");
         }
         return;
