@@ -111,6 +111,7 @@ PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings&
       warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
       lightTree_(scene.lights().usesTree(settings.lightSampler)),
+      raysFindLight_(scene.lights().deltaLights() < scene.lights().size()),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
 PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& lights) {
@@ -255,6 +256,8 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
         lightSample(surface, reference, choiceNormal, frame, wo, bsdf, lightU, path.weight, shadow);
     }
+    // The next ray could add only the emission it finds (bounce + 1 == depth), and it finds none.
+    if (bounce + 1 == settings_.depth && !raysFindLight_) return false;
     BsdfNumbers numbers{diffuseU};
     if (bsdf.readsLobeNumbers()) addLobeNumbers(numbers, samples, bounce);
     const std::optional<BsdfSample> sampled = bsdf.sample(wo, numbers);

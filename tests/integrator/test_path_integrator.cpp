@@ -151,7 +151,7 @@ TEST_CASE("integrator: depth caps the bounces, and emission is one-sided") {
     CHECK(PathIntegrator(scene, {5, SamplerKind::Strata24, false}).radiance(away, samples, rays).x == 0.0f);
 }
 
-TEST_CASE("integrator: a point light through next-event estimation gives rho/pi I cos / r^2") {
+TEST_CASE("integrator: a point light through next-event estimation gives rho/pi I cos / r^2, and no ray after it") {
     MeshData mesh;
     mesh.materials = {Material{"receiver", glm::vec3(0.6f), glm::vec3(0.0f)}};
     test::addQuad(mesh, {-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0);
@@ -166,6 +166,9 @@ TEST_CASE("integrator: a point light through next-event estimation gives rho/pi 
         const float value = PathIntegrator(scene, {1, SamplerKind::Strata24, true}).radiance(ray, samples, rays).x;
         CHECK(value == doctest::Approx(exact).epsilon(1e-5));
     }
+    // A ray finds no point light, so after its last light sample a path traces nothing more: the
+    // camera ray and one shadow ray each.
+    CHECK(rays == 2 * 24);
     // Without --nee, a point light is dark; at depth 0 it is not reached either.
     const PathSamples samples(3, 0, 0, 0);
     CHECK(PathIntegrator(scene, {1, SamplerKind::Strata24, false}).radiance(ray, samples, rays).x == 0.0f);
