@@ -253,7 +253,7 @@ void BenchCommand::run() const {
         peer.repeats = quick ? 1 : 3;
         peer.threads = threads;
         peer.outDir = out;
-        for (int depth : depthsGiven || quick ? std::vector<int>{depths.front()} : std::vector<int>{5, 8}) {
+        for (int depth : depthsGiven || quick ? std::vector<int>{depths.front()} : std::vector<int>{6, 9}) {
             peer.depth = depth;
             summary += runPeerComparison(peer);
         }
@@ -348,7 +348,7 @@ void addBenchCommand(CLI::App& app) {
                   "Small sizes and budgets: the CI smoke run, about 40 s on 2 idle cores");
     sub->add_option("--out-dir", command->outDir, "Folder for CSV, markdown and plots")->capture_default_str();
     CLI::Option* depth = sub->add_option("--depth", command->depths,
-                                         "Recursion depth(s) K (repeatable); the Embree race's default: 5 and 8")
+                                         "Recursion depth(s) K (repeatable); the Embree race's default: 6 and 9")
                              ->capture_default_str();
     sub->add_option("--width", command->width, "Image width of the error runs (default 96; quick 48)");
     sub->add_option("--max-spp", command->maxSpp, "Last checkpoint, a multiple of 24 (default 384)");

@@ -109,7 +109,7 @@ std::string runPeerComparison(const PeerSettings& settings) {
         "--fov", number(pose.fovYDegrees),
         "--size", std::to_string(settings.width), std::to_string(settings.height),
         "--spp", std::to_string(settings.spp),
-        "--max-path-length", std::to_string(settings.depth + 1),
+        "--max-path-length", std::to_string(settings.depth),
         "--threads", std::to_string(threads), "-o", embreeImage.string()};
     for (const PointLight& light : scene.scene.mesh().pointLights) {
         embreeArgs.insert(embreeArgs.end(),
@@ -143,9 +143,10 @@ std::string runPeerComparison(const PeerSettings& settings) {
                cell("%.4f", ppmMean(embreeImage))});
     writeFile(settings.outDir / ("peer" + suffix + ".csv"), table.csv());
     return "\n### Against Embree's tutorial path tracer (" + settings.scene.string() + ")\n\n" +
-           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d), %s, whole-process "
-                "wall time including loading and BVH build, runs alternated.\n\n",
-                settings.width, settings.height, settings.spp, settings.depth, settings.depth + 1,
+           cell("%dx%d, %d spp, depth %d (Embree --max-path-length %d: both render the light of up "
+                "to %d bounces), %s, whole-process wall time including loading and BVH build, runs "
+                "alternated.\n\n",
+                settings.width, settings.height, settings.spp, settings.depth, settings.depth, settings.depth,
                 threadsText(threads).c_str()) +
            table.markdown() + ratios +
            "\nWhat differs: Embree's tutorial (renderPixelFunction in its pathtracer_device.cpp) "

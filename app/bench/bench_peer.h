@@ -11,7 +11,9 @@ namespace strata {
 
 struct PeerSettings {
     std::filesystem::path scene;  // an OBJ with a JSON sidecar holding the camera and point lights
-    int depth = 5;                // Strata's K; Embree's --max-path-length is K + 1
+    // Strata's K, and Embree's --max-path-length: the tutorial's L hits each take a light sample,
+    // so it renders the light of up to L bounces, as Strata does at depth K = L.
+    int depth = 6;
     int width = 256;
     int height = 256;
     int spp = 24;
