@@ -111,18 +111,17 @@ PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings&
       warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
       lightTree_(scene.lights().usesTree(settings.lightSampler)),
-      raysFindLight_(scene.lights().deltaLights() < scene.lights().size()),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
 PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& lights) {
     if (lights.size() > 1) return LightNumbers::ChoiceAndPoint;
-    return lights.deltaLights() == lights.size() ? LightNumbers::None : LightNumbers::Point;
+    return lights.raysFindLight() ? LightNumbers::Point : LightNumbers::None;
 }
 
 std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
     const SceneLights& lights = scene.lights();
     if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights, no environment)";
-    if (lights.deltaLights() < lights.size()) return std::nullopt;
+    if (lights.raysFindLight()) return std::nullopt;
     if (!settings.nextEventEstimation) return "its only lights are point lights, which need next-event estimation (not --no-nee)";
     if (settings.depth == 0) return "its only lights are point lights, which depth 0 never reaches";
     return std::nullopt;
@@ -256,8 +255,9 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
         lightSample(surface, reference, choiceNormal, frame, wo, bsdf, lightU, path.weight, shadow);
     }
-    // The next ray could add only the emission it finds (bounce + 1 == depth), and it finds none.
-    if (bounce + 1 == settings_.depth && !raysFindLight_) return false;
+    // The next ray could add only the emission it finds (bounce + 1 == depth): where every light
+    // is a delta light, none, and it is not traced.
+    if (bounce + 1 == settings_.depth && !lights.raysFindLight()) return false;
     BsdfNumbers numbers{diffuseU};
     if (bsdf.readsLobeNumbers()) addLobeNumbers(numbers, samples, bounce);
     const std::optional<BsdfSample> sampled = bsdf.sample(wo, numbers);

@@ -138,9 +138,6 @@ private:
     DiffuseWarp warp_;   // the sampler's, for the density of a light sample's direction (MIS)
     bool sampleLights_;  // next-event estimation on and something to sample
     bool lightTree_;     // the choice by the light tree, not by power
-    // Whether a ray can find light: false when every light is a delta light, which only a light
-    // sample reaches; the ray a path would trace after its last light sample is then not traced.
-    bool raysFindLight_;
     LightNumbers lightNumbers_;
 };
 

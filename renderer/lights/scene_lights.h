@@ -114,6 +114,8 @@ public:
     std::string_view defaultSkyReason() const;
     // The delta lights (point and directional), which next-event estimation alone reaches.
     size_t deltaLights() const { return deltaLights_; }
+    // Whether a ray can find a light: some light is not a delta light.
+    bool raysFindLight() const { return deltaLights_ < lights_.size(); }
 
 private:
     uint32_t add(std::unique_ptr<Light> light);

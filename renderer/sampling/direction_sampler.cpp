@@ -21,10 +21,10 @@ constexpr std::array<SamplerEntry, kSamplerKinds.size()> kChoices{{
     {SamplerKind::Strata24Bsdf, {PointSet::StratumSequence, DiffuseWarp::WarpedStrata}},
     {SamplerKind::Bsdf, {PointSet::Independent, DiffuseWarp::Cosine}},
 }};
-// samplerChoice indexes the table by the kind.
+// samplerChoice indexes the table by the kind, and kSamplerKinds lists the kinds in that order.
 static_assert([] {
     for (size_t i = 0; i < kChoices.size(); ++i) {
-        if (static_cast<size_t>(kChoices[i].kind) != i) return false;
+        if (static_cast<size_t>(kChoices[i].kind) != i || kSamplerKinds[i] != kChoices[i].kind) return false;
     }
     return true;
 }());

@@ -2,7 +2,6 @@
 // temporaries created exclusively beside them, in any letter case of their extensions.
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <fstream>
 #include <set>
 #include <stb_image.h>

@@ -46,6 +46,10 @@ TEST_CASE("scene lights: emitting triangles and point lights, chosen by power") 
     const SceneLights lights(descriptions);
     REQUIRE(lights.size() == 5);
     CHECK(lights.deltaLights() == 1);
+    CHECK(lights.raysFindLight());  // the emitting triangles
+    LightDescriptions pointOnly;
+    pointOnly.pointLights = descriptions.pointLights;
+    CHECK_FALSE(SceneLights(pointOnly).raysFindLight());  // no default sky beside a point light
     CHECK(lights.lightOnTriangle(0) == -1);
     CHECK(lights.lightOnTriangle(1) == -1);
     REQUIRE(lights.lightOnTriangle(2) >= 0);
