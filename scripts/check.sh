@@ -17,8 +17,9 @@ jobs=${STRATA_JOBS:-$(nproc)}
 
 # The checking builds compile in unity batches of 16 files per compiler run (CMake's UNITY_BUILD),
 # which parse the common headers once per batch: a Release build takes 171 s instead of 394 s on
-# two cores. The main build (scripts/setup.sh) compiles every file alone, as the bench measures
-# it, so a file that lacks an include still fails there.
+# two cores. The main build (scripts/setup.sh) batches only the front ends and the tests: the
+# renderer library's files compile alone, as the bench times them, so a renderer file that lacks
+# an include still fails there.
 configure_and_build() {  # folder, target ("" = all), cmake arguments...
     local folder=$1 target=$2
     shift 2
