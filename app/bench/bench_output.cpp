@@ -9,10 +9,30 @@
 
 namespace strata {
 
+namespace {
+
+// A cell as RFC 4180 writes it: quoted, its quotes doubled, when it holds a comma, a quote or a
+// line break (labels such as "Strata defaults (strata24-bsdf, NEE, ...)" do), so that a CSV
+// reader sees the columns the header names.
+std::string csvField(const std::string& cell) {
+    if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
+    std::string quoted = "\"";
+    for (char c : cell) {
+        if (c == '"') quoted += '"';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+}  // namespace
+
 std::string Table::csv() const {
     auto line = [](const std::vector<std::string>& cells) {
         std::string s;
-        for (size_t i = 0; i < cells.size(); ++i) s += (i ? "," : "") + cells[i];
+        for (size_t i = 0; i < cells.size(); ++i) {
+            if (i > 0) s += ',';
+            s += csvField(cells[i]);
+        }
         return s + "\n";
     };
     std::string text = line(header);
