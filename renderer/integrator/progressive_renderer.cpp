@@ -14,55 +14,13 @@
 #include <unistd.h>
 
 #include "util/error.h"
-
-#if defined(__SANITIZE_THREAD__)
-#include <sanitizer/tsan_interface.h>
-#endif
+#include "util/tbb_hand_off.h"
 
 namespace strata {
 namespace {
 constexpr int kTileSize = 16;
 constexpr int kMaxThreads = 1024;
 
-// TBB hands tile tasks between threads, and back, through synchronisation inside libtbb, which
-// Debian does not build with ThreadSanitizer: TSan would take every read of a task's body or range
-// for a race. In the TSan build the body announces those hand-offs (a release after it is made or
-// copied, an acquire before it is copied or run); in other builds it is the body itself. The TSan
-// check (scripts/check.sh tsan) then reports only races in what the tiles do.
-#if defined(__SANITIZE_THREAD__)
-char* handOffToken() {
-    static char token;
-    return &token;
-}
-template <typename Body>
-class HandedOffBody {
-public:
-    explicit HandedOffBody(Body body) : body_(std::move(body)) { __tsan_release(handOffToken()); }
-    HandedOffBody(const HandedOffBody& other) : body_((__tsan_acquire(handOffToken()), other.body_)) {
-        __tsan_release(handOffToken());
-    }
-    template <typename Range>
-    void operator()(const Range& range) const {
-        __tsan_acquire(handOffToken());
-        body_(range);
-        __tsan_release(handOffToken());
-    }
-
-private:
-    Body body_;
-};
-template <typename Body>
-HandedOffBody<Body> handedOff(Body body) {
-    return HandedOffBody<Body>(std::move(body));
-}
-void receiveHandOff() { __tsan_acquire(handOffToken()); }
-#else
-template <typename Body>
-Body handedOff(Body body) {
-    return body;
-}
-void receiveHandOff() {}
-#endif
 // Sets the nice value of each thread as it joins the arena (nice values are per thread on Linux).
 class ThreadNiceness : public tbb::task_scheduler_observer {
 public:
