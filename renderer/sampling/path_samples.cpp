@@ -52,7 +52,6 @@ const PixelStreams::StratumStreamPoint& PixelStreams::stratumStreamPoint(int bou
 PathSamples::PathSamples(const PixelKeys& keys, const PixelStreams* streams, uint32_t pass, int step)
     : keys_(keys),
       streams_(streams),
-      pathKey_(hashCombine(hashCombine(keys.pixel, pass), static_cast<uint64_t>(step))),
       pixelIndex_(pass * static_cast<uint32_t>(kStrataCount) + static_cast<uint32_t>(step)),
       pass_(pass),
       step_(step) {}
@@ -64,13 +63,17 @@ PathSamples::PathSamples(const PixelStreams& shared, int step)
     : PathSamples(shared.keys(), &shared, shared.pass(), step) {}
 
 glm::vec2 PathSamples::point(uint64_t dimension) const {
-    const uint64_t bits = hashCombine(pathKey_, dimension);
+    if (!pathKey_) pathKey_ = hashCombine(hashCombine(keys_.pixel, pass_), static_cast<uint64_t>(step_));
+    const uint64_t bits = hashCombine(*pathKey_, dimension);
     // Two 24-bit coordinates from one 64-bit hash: bits 40..63 and bits 16..39.
     return {uniformFloat(bits), uniformFloat(bits << 24)};
 }
 
 glm::vec2 PathSamples::pixelJitter() const {
-    return (streams_ ? streams_->jitter() : SobolStream(keys_.jitter)).point(pixelIndex_);
+    // In the stream's own order: every other value's stream is shuffled, which pairs it with the
+    // jitter at random (sobol.h); a shuffle here too would pair nothing more, and the jitter is
+    // drawn for every path, however short.
+    return (streams_ ? streams_->jitter() : SobolStream(keys_.jitter)).orderedPoint(pixelIndex_);
 }
 
 glm::vec2 PathSamples::bouncePoint(int bounce) const {

@@ -7,7 +7,8 @@
 // over the pixel's paths: the pixel's path number n = 24 pass + step indexes a low-discrepancy
 // stream (sobol.h) of its own for each of these values at each bounce, Owen-scrambled with seeds
 // from (seed, pixel, value, bounce), and index-shuffled too, so that two streams pair their points
-// at random ("padding", as pbrt-v4's PaddedSobolSampler and Cycles' Sobol-Burley do). Each value
+// at random ("padding", as pbrt-v4's PaddedSobolSampler and Cycles' Sobol-Burley do; the jitter's
+// stream alone keeps its own order, which the others' shuffles pair at random already). Each value
 // alone is then stratified over the pixel's first n paths (a (0,2)-sequence in 2D), while the values
 // stay independent of each other and of the direction's stratum. Every single value is uniform, so
 // every path is unbiased. The direction samplers' own points (bouncePoint, stratumSequencePoint)
@@ -156,7 +157,9 @@ private:
 
     PixelKeys keys_;
     const PixelStreams* streams_;  // the pixel's shared streams, or none
-    uint64_t pathKey_;
+    // The path's key for its hashed points, worked out on the first bouncePoint() call: the
+    // samplers that stratify by sequence never ask for it.
+    mutable std::optional<uint64_t> pathKey_;
     uint32_t pixelIndex_;  // the path's number n = 24 pass + step within the pixel's streams
     uint32_t pass_;
     int step_;

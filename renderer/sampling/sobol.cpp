@@ -144,13 +144,16 @@ uint32_t SobolStream::shuffled(uint32_t index) const { return owenScramble(index
 
 glm::vec2 unitPoint(glm::uvec2 fixedPoint) { return {toUnitFloat(fixedPoint.x), toUnitFloat(fixedPoint.y)}; }
 
-glm::uvec2 SobolStream::pointBits(uint32_t index) const {
-    const uint32_t i = shuffled(index);
-    return {scrambledCoordinate(i, coordinateSeeds_[0]),
-            scrambledCoordinate(multiply(kSecondDimensionReversed, i), coordinateSeeds_[1])};
+glm::uvec2 SobolStream::scrambledBits(uint32_t sequenceIndex) const {
+    return {scrambledCoordinate(sequenceIndex, coordinateSeeds_[0]),
+            scrambledCoordinate(multiply(kSecondDimensionReversed, sequenceIndex), coordinateSeeds_[1])};
 }
 
+glm::uvec2 SobolStream::pointBits(uint32_t index) const { return scrambledBits(shuffled(index)); }
+
 glm::vec2 SobolStream::point(uint32_t index) const { return unitPoint(pointBits(index)); }
+
+glm::vec2 SobolStream::orderedPoint(uint32_t index) const { return unitPoint(scrambledBits(index)); }
 
 float SobolStream::value(uint32_t index) const {
     return toUnitFloat(scrambledCoordinate(shuffled(index), coordinateSeeds_[0]));

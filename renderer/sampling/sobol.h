@@ -52,6 +52,11 @@ public:
     // The same point as 32-bit fixed-point coordinates (x = value / 2^32), for callers that shift
     // it digitally (XOR) before it becomes a float; unitPoint(pointBits(i)) == point(i).
     glm::uvec2 pointBits(uint32_t index) const;
+    // Point `index` without the index shuffle: the scrambled sequence in its own order, so every
+    // aligned block of 2^m indices is still a (0,m,2)-net and every point is still uniform. Two
+    // bit reversals and a hash cheaper than point(); for a stream whose index no other unshuffled
+    // stream shares, since the shuffle is what pairs two streams' points at random.
+    glm::vec2 orderedPoint(uint32_t index) const;
     // The same for the first Sobol' dimension alone (a scrambled, shuffled van der Corput
     // sequence: every aligned block of 2^m values has one value in each interval
     // [k 2^-m, (k+1) 2^-m)), and for the first three, shuffled by one index scramble so that the
@@ -62,6 +67,8 @@ public:
 
 private:
     uint32_t shuffled(uint32_t index) const;
+    // The scrambled 2D point at `sequenceIndex` of the unscrambled sequence, as fixed point.
+    glm::uvec2 scrambledBits(uint32_t sequenceIndex) const;
 
     uint32_t indexSeed_ = 0;
     uint32_t coordinateSeeds_[3] = {0, 0, 0};

@@ -41,14 +41,19 @@ TEST_CASE("sobol: every aligned block of 2^m points is a (0,m,2)-net, scrambled 
         for (uint32_t block : {0u, 1u, 5u}) {
             std::vector<glm::dvec2> plain;
             std::vector<glm::dvec2> scrambled;
+            std::vector<glm::dvec2> ordered;
             for (uint32_t i = block << m; i < (block + 1) << m; ++i) {
                 plain.emplace_back(sobolFirstCoordinate(i) * 0x1p-32, sobolSecondCoordinate(i) * 0x1p-32);
-                const glm::vec2 p = SobolStream(0x1234567u + block).point(i);
+                const SobolStream stream(0x1234567u + block);
+                const glm::vec2 p = stream.point(i);
                 scrambled.emplace_back(p.x, p.y);
+                const glm::vec2 q = stream.orderedPoint(i);
+                ordered.emplace_back(q.x, q.y);
             }
             INFO("m " << m << " block " << block);
             CHECK(isNet(plain, m));
             CHECK(isNet(scrambled, m));
+            CHECK(isNet(ordered, m));
         }
     }
     // Not every point set is a net: i.i.d. points fail already at m = 4.
@@ -138,20 +143,24 @@ TEST_CASE("sobol: Owen scrambling keeps leading digits together and is a bijecti
 
 TEST_CASE("sobol: each scrambled point is uniform over the streams (chi-square)") {
     // Owen scrambling makes every single point uniform on [0,1)^2, which is what makes each path
-    // of strata24-qmc unbiased. 16 x 16 cells, points 0, 1 and 77 over 64000 streams.
-    for (uint32_t index : {0u, 1u, 77u}) {
-        constexpr int kBins = 16;
-        constexpr int kStreams = 64000;
-        std::vector<int> counts(kBins * kBins, 0);
-        for (int s = 0; s < kStreams; ++s) {
-            const glm::vec2 p = SobolStream(hashCombine(99, s)).point(index);
-            ++counts[static_cast<int>(p.x * kBins) * kBins + static_cast<int>(p.y * kBins)];
+    // of strata24-qmc unbiased, with the index shuffle or without it (the pixel jitter).
+    // 16 x 16 cells, points 0, 1 and 77 over 64000 streams.
+    for (const bool ordered : {false, true}) {
+        for (uint32_t index : {0u, 1u, 77u}) {
+            constexpr int kBins = 16;
+            constexpr int kStreams = 64000;
+            std::vector<int> counts(kBins * kBins, 0);
+            for (int s = 0; s < kStreams; ++s) {
+                const SobolStream stream(hashCombine(99, s));
+                const glm::vec2 p = ordered ? stream.orderedPoint(index) : stream.point(index);
+                ++counts[static_cast<int>(p.x * kBins) * kBins + static_cast<int>(p.y * kBins)];
+            }
+            const double expected = static_cast<double>(kStreams) / (kBins * kBins);
+            double chi2 = 0.0;
+            for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
+            INFO((ordered ? "ordered" : "shuffled") << " index " << index << " chi2 " << chi2);
+            CHECK(chi2 < 360.0);  // 255 degrees of freedom, p ~ 1e-5
         }
-        const double expected = static_cast<double>(kStreams) / (kBins * kBins);
-        double chi2 = 0.0;
-        for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
-        INFO("index " << index << " chi2 " << chi2);
-        CHECK(chi2 < 360.0);  // 255 degrees of freedom, p ~ 1e-5
     }
 }
 
