@@ -23,7 +23,7 @@ float nextFloat(float x, bool up) {
 
 glm::vec3 offsetRayOrigin(const glm::vec3& point, const glm::vec3& error, const glm::vec3& normal,
                           const glm::vec3& direction) {
-    const float distance = glm::dot(glm::abs(normal), error);
+    const float distance = glm::dot(magnitudes(normal), error);
     glm::vec3 offset = distance * normal;
     if (glm::dot(direction, normal) < 0.0f) offset = -offset;
     glm::vec3 origin = point + offset;

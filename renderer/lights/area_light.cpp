@@ -21,9 +21,9 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     // One bound covers the points both samplers compute: p0 + b1 e1 + b2 e2 in float with
     // barycentrics at most 1 (a few operations on terms up to |p0| + |e1| + |e2|), and a point of
     // the triangle found in double and rounded once; plus Embree's rounding.
-    const float largest = maxComponent(glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2)));
-    pointError_ = gammaBound(5) * (glm::abs(p0) + glm::abs(p1 - p0) + glm::abs(p2 - p0)) + traversalError(largest);
-    normalError_ = 2.0f * glm::dot(glm::abs(normal_), pointError_);
+    const float largest = maxComponent(glm::max(glm::max(magnitudes(p0), magnitudes(p1)), magnitudes(p2)));
+    pointError_ = gammaBound(5) * (magnitudes(p0) + magnitudes(p1 - p0) + magnitudes(p2 - p0)) + traversalError(largest);
+    normalError_ = 2.0f * glm::dot(magnitudes(normal_), pointError_);
 }
 
 AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const Material& material,

@@ -489,11 +489,11 @@ void Scene::occluded(std::span<const Ray> rays, std::span<const float> distances
     const glm::mat4& m = placement.toWorld;
     const glm::vec3 local = hit.point;
     const glm::mat3 linear(m);
-    const glm::mat3 magnitude(glm::abs(linear[0]), glm::abs(linear[1]), glm::abs(linear[2]));
+    const glm::mat3 magnitude(magnitudes(linear[0]), magnitudes(linear[1]), magnitudes(linear[2]));
     const glm::vec3 translation(m[3]);
     hit.point = linear * local + translation;
-    const glm::vec3 terms = magnitude * glm::abs(local) + glm::abs(translation);
-    const float reach = glm::max(maxComponent(glm::abs(hit.point)), maxComponent(glm::abs(translation)));
+    const glm::vec3 terms = magnitude * magnitudes(local) + magnitudes(translation);
+    const float reach = glm::max(maxComponent(magnitudes(hit.point)), maxComponent(magnitudes(translation)));
     hit.pointError = gammaBound(3) * terms + (1.0f + gammaBound(3)) * (magnitude * hit.pointError) +
                      traversalError(reach);
     // Normals by the inverse transpose, which keeps the front side under a mirroring map (mesh.h).
@@ -523,8 +523,8 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     hit.point = weighted0 + weighted1 + weighted2;
     // Rounding of the barycentric sum (pbrt-v4's bound), plus Embree's own error (rounding.h; the
     // fast test is kept to the scenes where that suffices, traversal_precision.h).
-    const glm::vec3 largest = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
-    hit.pointError = gammaBound(7) * (glm::abs(weighted0) + glm::abs(weighted1) + glm::abs(weighted2)) +
+    const glm::vec3 largest = glm::max(glm::max(magnitudes(p0), magnitudes(p1)), magnitudes(p2));
+    hit.pointError = gammaBound(7) * (magnitudes(weighted0) + magnitudes(weighted1) + magnitudes(weighted2)) +
                      traversalError(maxComponent(largest));
     // Component by component: copied whole, GCC 12 moves normal.z and the next field as one
     // 8-byte word through the stack, a load that store-to-load forwarding cannot serve (a stall
