@@ -228,8 +228,11 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     if (scene_.materials().isBlack(triangle.material)) return false;  // its weight would be zero
     // The bounce's random numbers depend on the path, not on the surface: drawn first, their
     // arithmetic overlaps the surface's rather than lengthening the chain from the hit to the
-    // next ray (cornell_point, defaults: 5% of the CPU time).
-    const DiffuseSampling diffuseU = diffuseNumbers(settings_.sampler, samples, bounce);
+    // next ray (cornell_point, defaults: 5% of the CPU time). A material with no diffuse lobe
+    // (a metal, glass) never reads the diffuse lobe's stratum and point, and they are not drawn.
+    const DiffuseSampling diffuseU = scene_.materials().readsDiffuseNumbers(triangle.material)
+                                         ? diffuseNumbers(settings_.sampler, samples, bounce)
+                                         : DiffuseSampling{warp_, -1, glm::vec2(0.0f)};
     const glm::vec3 lightU = sampleLights_ ? lightNumbers(samples, bounce) : glm::vec3(0.0f);
 
     // The frame is turned to the side the ray came from: reflection is two-sided, and a

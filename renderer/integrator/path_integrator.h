@@ -136,6 +136,7 @@ private:
     const Scene& scene_;
     PathIntegratorSettings settings_;
     DiffuseWarp warp_;   // the sampler's, for the density of a light sample's direction (MIS)
+                         // and the diffuse numbers of a material that reads none
     bool sampleLights_;  // next-event estimation on and something to sample
     bool lightTree_;     // the choice by the light tree, not by power
     LightNumbers lightNumbers_;

@@ -99,6 +99,9 @@ public:
     bool hasNonSpecularLobe() const { return (flags() & (kDiffuse | kGlossy)) != 0; }
     // Whether sample() reads more than numbers.diffuse (a lobe point or a lobe choice).
     bool readsLobeNumbers() const { return flags() != (kReflection | kDiffuse); }
+    // Whether sample() reads numbers.diffuse's stratum and point: only a diffuse lobe does (its
+    // warp, which a mixture's density names, is the sampler's whatever the point).
+    bool readsDiffuseNumbers() const { return (flags() & kDiffuse) != 0; }
 
     template <class M>
     const M* as() const { return std::get_if<M>(&model_); }

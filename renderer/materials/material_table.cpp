@@ -75,7 +75,12 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
                 }
             }
         }
-        entries_.push_back({build(constants, true), build(constants, false), constants, absorptionOf(m), black, textured});
+        const Bsdf front = build(constants, true);
+        const Bsdf back = build(constants, false);
+        // A texture can give a diffuse base where the constants have none (a metallic texture
+        // under a metallic factor of 1), so a textured material is taken to read them.
+        const bool readsDiffuseNumbers = textured >= 0 || front.readsDiffuseNumbers() || back.readsDiffuseNumbers();
+        entries_.push_back({front, back, constants, absorptionOf(m), black, readsDiffuseNumbers, textured});
     }
 }
 

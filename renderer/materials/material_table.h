@@ -52,6 +52,10 @@ public:
     // Whether the material scatters nothing, so a path that reaches it ends there (textures
     // multiply the constants, so a black material stays black).
     bool isBlack(uint32_t material) const { return entries_[material].black; }
+    // Whether the material's BSDF at some point of its surface reads the diffuse lobe's numbers
+    // (Bsdf::readsDiffuseNumbers), known before a hit's BSDF is built: a path tracer then draws
+    // them only for the materials that read them.
+    bool readsDiffuseNumbers(uint32_t material) const { return entries_[material].readsDiffuseNumbers; }
     // The absorption coefficient (per unit length, per channel) inside the volume the material
     // bounds: 0 for all but a dielectric with KHR_materials_volume's attenuation.
     const glm::vec3& absorption(uint32_t material) const { return entries_[material].absorption; }
@@ -78,6 +82,7 @@ private:
         SurfacePoint constants;
         glm::vec3 absorption;
         bool black;
+        bool readsDiffuseNumbers;
         int32_t textured;  // index in textured_, -1 for a material without BSDF textures
     };
     const SpecularLobe* lobeFor(float roughness);

@@ -14,6 +14,8 @@
 
 #include "materials/bsdf.h"
 #include "materials/material_table.h"
+#include "materials/metallic_roughness.h"
+#include "textures/texture.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -40,6 +42,10 @@ std::vector<Case> cases() {
                      m.diffuse = glm::vec3(0.5f);
                      m.specular = glm::vec3(0.3f);
                      m.roughness = 0.6f;
+                 })});
+    c.push_back({"rough conductor", make([](Material& m) {
+                     m.specular = glm::vec3(0.95f, 0.8f, 0.5f);
+                     m.roughness = 0.3f;
                  })});
     c.push_back({"smooth conductor", make([](Material& m) {
                      m.specular = glm::vec3(0.9f, 0.6f, 0.3f);
@@ -302,4 +308,53 @@ TEST_CASE("bsdf contract: no lobe returns more energy than it receives (white fu
             if (lossless) CHECK(albedo.mean == doctest::Approx(1.0).epsilon(1e-5));
         }
     }
+}
+
+TEST_CASE("bsdf contract: a model that does not read the diffuse numbers samples the same whatever they are") {
+    int without = 0;
+    for (const Case& c : cases()) {
+        const MaterialTable table({c.material});
+        const Bsdf bsdf = table.bsdf(0, glm::vec2(0.0f), c.front);
+        INFO(c.name);
+        // The table knows it before a hit's BSDF is built: for an untextured material, the BSDF's own answer.
+        CHECK(table.readsDiffuseNumbers(0) == bsdf.readsDiffuseNumbers());
+        CHECK(bsdf.readsDiffuseNumbers() == ((bsdf.flags() & kDiffuse) != 0));
+        if (bsdf.readsDiffuseNumbers()) continue;
+        ++without;
+        Uniforms u{29};
+        for (const glm::vec3& wo : viewDirections(bsdf)) {
+            for (int s = 0; s < 500; ++s) {
+                BsdfNumbers numbers = u.numbers();
+                const auto drawn = bsdf.sample(wo, numbers);
+                // What a path tracer passes where it draws none: the warp alone.
+                numbers.diffuse = DiffuseSampling{numbers.diffuse.warp, -1, glm::vec2(0.0f)};
+                const auto undrawn = bsdf.sample(wo, numbers);
+                REQUIRE(drawn.has_value() == undrawn.has_value());
+                if (!drawn) continue;
+                CHECK(drawn->wi == undrawn->wi);
+                CHECK(drawn->weight == undrawn->weight);
+                CHECK(drawn->pdf == undrawn->pdf);
+                CHECK(drawn->flags == undrawn->flags);
+            }
+        }
+    }
+    // The conductors and the dielectrics.
+    CHECK(without >= 8);
+}
+
+TEST_CASE("material table: a textured material is taken to read the diffuse numbers") {
+    // A glTF metal: metallic factor 1, so its constants have no diffuse base.
+    Material metal;
+    metal.name = "metal";
+    metal.metallicRoughness = MetallicRoughness{glm::vec3(0.9f), 1.0f};
+    const LayeredReflectance constants = fromMetallicRoughness(glm::vec3(0.9f), 1.0f);
+    metal.diffuse = constants.diffuse;
+    metal.specular = constants.specular;
+    metal.roughness = 0.3f;
+    CHECK_FALSE(MaterialTable({metal}).readsDiffuseNumbers(0));
+    // A metallic texture of 0.5 under that factor gives it one.
+    metal.textures.roughnessMetallic = std::make_shared<Texture>(1, 1, 3, std::vector<float>{0.0f, 1.0f, 0.5f});
+    const MaterialTable textured({metal});
+    CHECK(textured.bsdf(0, glm::vec2(0.5f)).readsDiffuseNumbers());
+    CHECK(textured.readsDiffuseNumbers(0));
 }
