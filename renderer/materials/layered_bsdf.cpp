@@ -92,6 +92,7 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, const BsdfNum
                                 diffuseNormalisation_ * warped.cosOverPdf, kReflection | kDiffuse,
                                 numbers.diffuse.stratum);
     }
+    if (!hasDiffuse_) return conductorSample(wo, numbers.lobePoint);
     glm::vec3 wi;
     BsdfFlags lobe = kReflection | kDiffuse;
     int stratum = numbers.diffuse.stratum;
@@ -117,6 +118,25 @@ float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp war
     float density = (1.0f - pSpecular) * diffuseWarpPdf(warp, wi);
     if (pSpecular > 0.0f) density += pSpecular * lobe_->distribution.reflectionPdf(wo, wi);
     return density;
+}
+
+std::optional<BsdfSample> LayeredBsdf::conductorSample(const glm::vec3& wo, glm::vec2 u) const {
+    const GgxDistribution& ggx = lobe_->distribution;
+    const glm::vec3 h = ggx.sampleVisibleNormal(wo, u);
+    const float cosOH = glm::dot(wo, h);
+    const glm::vec3 reflected = 2.0f * cosOH * h - wo;
+    if (reflected.z <= 0.0f) return std::nullopt;
+    const glm::vec3 wi = glm::normalize(reflected);
+    // With 1 / G1(wo) = 1 + Lambda(wo) and 1 / G2 = 1 + Lambda(wo) + Lambda(wi):
+    //   pdf = G1(wo) D(h) / (4 wo.z),  f = F D G2 / (4 wo.z wi.z),  f wi.z / pdf = F G2 / G1(wo).
+    const float inverseMasking = 1.0f + ggx.lambda(wo);
+    const float inverseShadowing = inverseMasking + ggx.lambda(wi);
+    const float quarterDensity = ggx.density(h) / (4.0f * wo.z);
+    const float pdf = quarterDensity / inverseMasking;
+    if (!(pdf > 0.0f)) return std::nullopt;
+    const glm::vec3 fresnel = schlickFresnel(specular_, cosOH);
+    return reflectionSample(wi, fresnel * (quarterDensity / (inverseShadowing * wi.z)), pdf,
+                            fresnel * (inverseMasking / inverseShadowing), kReflection | kGlossy, -1);
 }
 
 std::optional<glm::vec3> LayeredBsdf::sampleSpecular(const glm::vec3& wo, glm::vec2 u) const {

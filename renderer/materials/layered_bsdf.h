@@ -72,6 +72,10 @@ public:
 private:
     // The probability that sample() takes the specular lobe at wo: lobeChoice below it does.
     float specularProbability(const glm::vec3& wo) const;
+    // The sample of a model without a diffuse base (a conductor): a direction by GGX visible
+    // normals, whose weight f cos / pdf is F G2 / G1(wo) in closed form (Heitz 2018),
+    // cheaper than working out f and the pdf from the direction, as a mixture must.
+    std::optional<BsdfSample> conductorSample(const glm::vec3& wo, glm::vec2 u) const;
     // The specular lobe alone: a direction by GGX visible normals (empty when it falls below the
     // surface).
     std::optional<glm::vec3> sampleSpecular(const glm::vec3& wo, glm::vec2 u) const;
