@@ -5,6 +5,7 @@
 
 #include "io/image_io.h"
 #include "util/constants.h"
+#include "util/turns.h"
 
 namespace strata {
 
@@ -35,14 +36,16 @@ const glm::vec3& EnvironmentMapLight::texel(glm::ivec2 cell) const {
 std::optional<LightSample> EnvironmentMapLight::sample(const glm::vec3& /*point*/, glm::vec2 u) const {
     if (!map_->sampled()) return std::nullopt;
     const PiecewiseConstant2D::Sample s = map_->distribution().sample(u);
-    const float theta = kPi * s.point.y;
-    const float sinTheta = std::sin(theta);
+    // theta = pi y (half a turn times y) and phi = 2 pi (x - 1/2), whose cosine and sine are
+    // those of 2 pi x negated.
+    const glm::vec2 polar = cosSinOfTurns(0.5f * s.point.y);
+    const float sinTheta = polar.y;
     if (!(sinTheta > 0.0f) || !(s.pdf > 0.0f)) return std::nullopt;
-    const float phi = 2.0f * kPi * (s.point.x - 0.5f);
+    const glm::vec2 azimuth = cosSinOfTurns(s.point.x);
     // In the map's frame, then turned by the rotation.
-    const float x = sinTheta * std::sin(phi);
-    const float z = -sinTheta * std::cos(phi);
-    const glm::vec3 direction(cosRotation_ * x + sinRotation_ * z, std::cos(theta),
+    const float x = -sinTheta * azimuth.y;
+    const float z = sinTheta * azimuth.x;
+    const glm::vec3 direction(cosRotation_ * x + sinRotation_ * z, polar.x,
                               -sinRotation_ * x + cosRotation_ * z);
     return LightSample{direction, std::numeric_limits<float>::infinity(),
                        texel(map_->distribution().cellOf(s.point)),

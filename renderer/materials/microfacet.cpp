@@ -8,6 +8,7 @@
 
 #include "util/constants.h"
 #include "util/tbb_hand_off.h"
+#include "util/turns.h"
 
 namespace strata {
 
@@ -54,9 +55,9 @@ glm::vec3 GgxDistribution::sampleVisibleNormal(const glm::vec3& wo, glm::vec2 u)
                              : glm::vec3(1.0f, 0.0f, 0.0f);
     const glm::vec3 t2 = glm::cross(vh, t1);
     const float r = std::sqrt(u.x);
-    const float phi = 2.0f * kPi * u.y;
-    const float p1 = r * std::cos(phi);
-    float p2 = r * std::sin(phi);
+    const glm::vec2 azimuth = cosSinOfTurns(u.y);
+    const float p1 = r * azimuth.x;
+    float p2 = r * azimuth.y;
     const float s = 0.5f * (1.0f + vh.z);
     p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
     const glm::vec3 nh =

@@ -3,21 +3,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "util/turns.h"
+
 namespace strata {
 
 glm::vec3 sampleUniformHemisphere(glm::vec2 u) {
     const float z = u.x;
     // (1 - z)(1 + z) rather than 1 - z^2: no cancellation near the pole.
     const float r = std::sqrt(std::max(0.0f, (1.0f - z) * (1.0f + z)));
-    const float phi = 2.0f * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const glm::vec2 azimuth = cosSinOfTurns(u.y);
+    return {r * azimuth.x, r * azimuth.y, z};
 }
 
 glm::vec3 sampleUniformSphere(glm::vec2 u) {
     const float z = 1.0f - 2.0f * u.x;
     const float r = std::sqrt(std::max(0.0f, (1.0f - z) * (1.0f + z)));
-    const float phi = 2.0f * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const glm::vec2 azimuth = cosSinOfTurns(u.y);
+    return {r * azimuth.x, r * azimuth.y, z};
 }
 
 glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
