@@ -99,7 +99,7 @@ std::optional<BsdfSample> LayeredBsdf::sample(const glm::vec3& wo, const BsdfNum
     if (numbers.lobeChoice < pSpecular) {
         const auto specular = sampleSpecular(wo, numbers.lobePoint);
         if (!specular) return std::nullopt;
-        wi = *specular;
+        wi = specular->wi;
         lobe = kReflection | kGlossy;
         stratum = -1;  // the specular lobe's direction lies in no particular stratum
     } else {
@@ -121,29 +121,28 @@ float LayeredBsdf::pdf(const glm::vec3& wo, const glm::vec3& wi, DiffuseWarp war
 }
 
 std::optional<BsdfSample> LayeredBsdf::conductorSample(const glm::vec3& wo, glm::vec2 u) const {
+    const auto specular = sampleSpecular(wo, u);
+    if (!specular) return std::nullopt;
     const GgxDistribution& ggx = lobe_->distribution;
-    const glm::vec3 h = ggx.sampleVisibleNormal(wo, u);
-    const float cosOH = glm::dot(wo, h);
-    const glm::vec3 reflected = 2.0f * cosOH * h - wo;
-    if (reflected.z <= 0.0f) return std::nullopt;
-    const glm::vec3 wi = glm::normalize(reflected);
+    const glm::vec3& wi = specular->wi;
     // With 1 / G1(wo) = 1 + Lambda(wo) and 1 / G2 = 1 + Lambda(wo) + Lambda(wi):
     //   pdf = G1(wo) D(h) / (4 wo.z),  f = F D G2 / (4 wo.z wi.z),  f wi.z / pdf = F G2 / G1(wo).
     const float inverseMasking = 1.0f + ggx.lambda(wo);
     const float inverseShadowing = inverseMasking + ggx.lambda(wi);
-    const float quarterDensity = ggx.density(h) / (4.0f * wo.z);
+    const float quarterDensity = ggx.density(specular->h) / (4.0f * wo.z);
     const float pdf = quarterDensity / inverseMasking;
     if (!(pdf > 0.0f)) return std::nullopt;
-    const glm::vec3 fresnel = schlickFresnel(specular_, cosOH);
+    const glm::vec3 fresnel = schlickFresnel(specular_, specular->cosOH);
     return reflectionSample(wi, fresnel * (quarterDensity / (inverseShadowing * wi.z)), pdf,
                             fresnel * (inverseMasking / inverseShadowing), kReflection | kGlossy, -1);
 }
 
-std::optional<glm::vec3> LayeredBsdf::sampleSpecular(const glm::vec3& wo, glm::vec2 u) const {
+std::optional<LayeredBsdf::SpecularDirection> LayeredBsdf::sampleSpecular(const glm::vec3& wo, glm::vec2 u) const {
     const glm::vec3 h = lobe_->distribution.sampleVisibleNormal(wo, u);
-    const glm::vec3 wi = 2.0f * glm::dot(wo, h) * h - wo;
+    const float cosOH = glm::dot(wo, h);
+    const glm::vec3 wi = 2.0f * cosOH * h - wo;
     if (wi.z <= 0.0f) return std::nullopt;
-    return glm::normalize(wi);
+    return SpecularDirection{glm::normalize(wi), h, cosOH};
 }
 
 }  // namespace strata

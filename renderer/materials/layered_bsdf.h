@@ -76,9 +76,14 @@ private:
     // normals, whose weight f cos / pdf is F G2 / G1(wo) in closed form (Heitz 2018),
     // cheaper than working out f and the pdf from the direction, as a mixture must.
     std::optional<BsdfSample> conductorSample(const glm::vec3& wo, glm::vec2 u) const;
-    // The specular lobe alone: a direction by GGX visible normals (empty when it falls below the
-    // surface).
-    std::optional<glm::vec3> sampleSpecular(const glm::vec3& wo, glm::vec2 u) const;
+    // The specular lobe alone: a direction by GGX visible normals, with the microfacet normal it
+    // reflects off and wo's cosine to it (empty when the direction falls below the surface).
+    struct SpecularDirection {
+        glm::vec3 wi;
+        glm::vec3 h;
+        float cosOH;
+    };
+    std::optional<SpecularDirection> sampleSpecular(const glm::vec3& wo, glm::vec2 u) const;
     glm::vec3 specularAlbedo(float mu) const;  // E_F(mu), per channel
     glm::vec3 evaluateLayered(const glm::vec3& wo, const glm::vec3& wi) const;  // both lobes
 
