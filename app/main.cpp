@@ -3,6 +3,7 @@
 // unknown command or option, an option's value out of range), 1 for an input error (a missing or
 // malformed file) or a failure while rendering.
 #include <cstdio>
+#include <malloc.h>
 #include <string>
 #include <vector>
 #include <CLI/App.hpp>
@@ -18,6 +19,12 @@
 #include "view_command.h"
 
 int main(int argc, char** argv) {
+    // A run allocates and frees large blocks more than once (a parser's growing arrays, images);
+    // glibc maps each block over 128 KiB afresh and unmaps it when freed, so its pages fault in
+    // again every time. Kept in the heap, freed blocks are reused (util/prefault.h on what a fault
+    // costs; docs/performance.md on what this saves).
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     // Named, so that usage lines say `strata` rather than the path it was started by.
     CLI::App app("Strata: a progressive path tracer with the 24-stratum hemisphere estimator", "strata");
     app.set_version_flag("--version", STRATA_VERSION_TEXT, "Print the version and exit");

@@ -111,7 +111,10 @@ void RenderCommand::run() const {
     std::optional<ProgressReporter> progress;
     if (job.isRoot()) progress.emplace("render", passesToRender, kPathsPerPass);
     // The PNG's exposure, unless given: from rank 0's first pass, the first pass of the image.
-    const bool meterExposure = !exposure && tonemapKind != Tonemap::Clamp;
+    const bool writesPng = std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+        return imageFormatOf(out) == ImageFormat::Png;
+    });
+    const bool meterExposure = writesPng && !exposure && tonemapKind != Tonemap::Clamp;
     float pngExposure = exposure.value_or(0.0f);
     bool metered = false;
     {
@@ -153,9 +156,7 @@ void RenderCommand::run() const {
 
     // Every output is encoded before any replaces its file: a failure leaves all of them as they were.
     const Image image = buffer.meanImage();
-    if (metered && std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
-            return imageFormatOf(out) == ImageFormat::Png;
-        })) {
+    if (metered) {
         std::fprintf(stderr, "note: PNG exposure %+.2f stops, from the first pass (--exposure fixes it)\n",
                      pngExposure);
     }
@@ -198,7 +199,7 @@ void RenderCommand::run() const {
             {"mean_spp", static_cast<double>(counters.paths) / buffer.pixelCount()},
             {"outputs", outputs},
             {"tonemap", tonemap},
-            {"exposure", pngExposure},
+            {"exposure", writesPng ? nlohmann::json(pngExposure) : nlohmann::json()},  // the PNG's
             {"peak_rss_mib", peakResidentKiB() / 1024.0},  // this process's own (process_memory.h)
         };
         std::printf("%s\n", report.dump().c_str());

@@ -7,22 +7,23 @@
 
 #include "io/image_io.h"
 #include "util/error.h"
+#include "util/prefault.h"
 
 namespace strata {
 
 AccumulationBuffer::AccumulationBuffer(int width, int height) : width_(width), height_(height) {
     if (width < 1 || height < 1) throw Error("image size must be at least 1x1");
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
-    sum_.resize(n);
-    luminanceSquares_.resize(n);
-    sampleCount_.resize(n);
-    surfaceSamples_.resize(n);
-    dropped_.resize(n);
-    openPassLuminance_.resize(n);
-    openPassSamples_.resize(n);
-    passMeanSum_.resize(n);
-    passMeanSquares_.resize(n);
-    passCount_.resize(n);
+    resizePrefaulted(sum_, n);
+    resizePrefaulted(luminanceSquares_, n);
+    resizePrefaulted(sampleCount_, n);
+    resizePrefaulted(surfaceSamples_, n);
+    resizePrefaulted(dropped_, n);
+    resizePrefaulted(openPassLuminance_, n);
+    resizePrefaulted(openPassSamples_, n);
+    resizePrefaulted(passMeanSum_, n);
+    resizePrefaulted(passMeanSquares_, n);
+    resizePrefaulted(passCount_, n);
 }
 
 void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value, bool onSurface) {
@@ -103,8 +104,8 @@ glm::dvec3 AccumulationBuffer::imageMean() const {
 
 Image AccumulationBuffer::meanImage() const {
     Image image{width_, height_, {}};
-    image.pixels.resize(pixelCount());
-    image.alpha.resize(pixelCount());
+    resizePrefaulted(image.pixels, pixelCount());
+    resizePrefaulted(image.alpha, pixelCount());
     for (size_t i = 0; i < pixelCount(); ++i) {
         image.pixels[i] = glm::vec3(mean(i));
         image.alpha[i] = static_cast<float>(coverage(i));

@@ -207,6 +207,13 @@ TEST_CASE("cli: the PNG is filmic at the first pass's exposure by default, --ton
     CHECK(pngByte(" --exposure 1").first == toByte(encodeSrgb(applyTonemap(glm::vec3(0.5f), 1.0f, Tonemap::Aces).x)));
     CHECK(pngByte(" --tonemap clamp --exposure 0.5").first == toByte(encodeSrgb(std::min(1.0f, 0.5f * std::sqrt(2.0f)))));
     CHECK(test::runStrata(render).err.find("note: PNG exposure -1.47 stops, from the first pass") != std::string::npos);
+    // Without a PNG there is no exposure to meter or report.
+    std::string exrOnly = render;
+    exrOnly.replace(exrOnly.rfind("out.png"), 7, "out.exr");
+    const auto linear = test::runStrata(exrOnly);
+    REQUIRE_MESSAGE(linear.exitCode == 0, linear.err);
+    CHECK(nlohmann::json::parse(linear.out)["exposure"].is_null());
+    CHECK(linear.err.find("PNG exposure") == std::string::npos);
 }
 
 TEST_CASE("cli: under the default sky camera rays that miss show the backdrop, and the EXR's alpha says where") {
