@@ -29,8 +29,9 @@ namespace {
 constexpr float kDefaultAlbedo = 0.8f;
 const char* const kDefaultMaterialNote = "using grey Kd 0.8";
 
-std::vector<std::string_view> splitWords(std::string_view line) {
-    std::vector<std::string_view> words;
+// The line's words, into `words` (cleared first: forEachLine keeps one vector for every line).
+void splitWords(std::string_view line, std::vector<std::string_view>& words) {
+    words.clear();
     size_t i = 0;
     while (i < line.size()) {
         while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
@@ -39,7 +40,6 @@ std::vector<std::string_view> splitWords(std::string_view line) {
         if (j > i) words.push_back(line.substr(i, j - i));
         i = j;
     }
-    return words;
 }
 
 // A statement's words after its keyword as one name, the spaces around it trimmed: "usemtl Hard
@@ -153,13 +153,14 @@ void forEachLine(const std::string& file, const std::string& name, Visit visit) 
     const std::string_view text = utf8TextOf(file, name, decoded);
     size_t lineNumber = 0;
     size_t start = 0;
+    std::vector<std::string_view> words;
     while (start <= text.size()) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         ++lineNumber;
         std::string_view line = text.substr(start, end - start);
         if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-        const auto words = splitWords(line);
+        splitWords(line, words);
         if (!words.empty()) visit(lineNumber, words);
         start = end + 1;
     }
@@ -177,8 +178,8 @@ bool checkNumbers(const std::string& name, size_t line, const std::vector<std::s
     }
     bool finite = true;
     for (size_t i = 1; i < words.size(); ++i) {
-        const std::string word(words[i]);
-        switch (classifyNumber(words[i])) {
+        const std::string_view word = words[i];
+        switch (classifyNumber(word)) {
             case NumberKind::Finite: break;
             case NumberKind::NonFinite:
                 if (!allowNonFinite) failAt(name, line, quote(word) + " is not a finite number");
