@@ -2,7 +2,7 @@
 // Large buffers that a render writes in full (the accumulation buffer, the image it hands on) have
 // their pages backed by the kernel in one call rather than one page fault per 4 KiB page at first
 // touch. A fault is a trap into the kernel; in a virtual machine it can cost 10 us or more (11 us on
-// the bench's), so a 256x256 accumulation buffer's 1,200 pages took 13 ms, a twentieth of a small
+// the bench's), so a 256x256 accumulation buffer's 1,216 pages took 13 ms, a twentieth of a small
 // render (docs/performance.md). Asking the kernel to populate the range (Linux 5.14 and later,
 // MADV_POPULATE_WRITE) does the same work in about a tenth of the time; where the kernel cannot, the
 // pages fault in as before.
