@@ -6,6 +6,7 @@
 #include <vector>
 #include <sys/mman.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "util/prefault.h"
 
@@ -19,20 +20,22 @@ long threadMinorFaults() {
     return usage.ru_minflt;
 }
 
-// The minor faults taken by writing one byte in each page of a fresh 16 MiB mapping (4 KiB pages,
-// no huge pages, so that every page would fault on its own), prefaulted first or not.
+constexpr long kPages = 4096;
+
+// The minor faults taken by writing one byte in each of kPages pages of a fresh mapping (no huge
+// pages, so that every page would fault on its own), prefaulted first or not.
 long faultsWritingFreshPages(bool prefaulted, bool& populated) {
-    constexpr size_t kPage = 4096;
-    constexpr size_t kBytes = 4096 * kPage;
-    void* mapped = mmap(nullptr, kBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    const auto pageSize = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+    const size_t length = kPages * pageSize;
+    void* mapped = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     REQUIRE(mapped != MAP_FAILED);
-    madvise(mapped, kBytes, MADV_NOHUGEPAGE);
+    madvise(mapped, length, MADV_NOHUGEPAGE);
     auto* bytes = static_cast<volatile unsigned char*>(mapped);
-    if (prefaulted) populated = prefault(mapped, kBytes);
+    if (prefaulted) populated = prefault(mapped, length);
     const long before = threadMinorFaults();
-    for (size_t i = 0; i < kBytes; i += kPage) bytes[i] = 1;
+    for (size_t i = 0; i < length; i += pageSize) bytes[i] = 1;
     const long faults = threadMinorFaults() - before;
-    munmap(mapped, kBytes);
+    munmap(mapped, length);
     return faults;
 }
 
