@@ -53,6 +53,7 @@ Tonemap RenderCommand::checkOptions(const RenderJob& job) const {
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
     render.backdrop();  // a bad --background before the scene is read
+    render.threadCount();
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
     if (render.noiseThreshold > 0.0 && job.ranks() > 1) {
         throw UsageError("--noise-threshold: not available under MPI");
@@ -67,6 +68,8 @@ void RenderCommand::run() const {
     // ranks at once, so a failure anywhere ends the job there, reported once by rank 0.
     RenderJob job;
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job); });
+    // An EXR map in the scene is decoded, and the EXR output encoded, on the render's threads.
+    setExrThreads(render.threads);
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
     const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });

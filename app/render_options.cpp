@@ -130,7 +130,6 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     const auto kind = parseSamplerKind(sampler);
     if (!kind) throw UsageError("--sampler: unknown sampler '" + sampler + "' (use " + samplerNames() + ")");
     if (depth < 0 || depth > 100000) throw UsageError("--depth: must be in 0..100000");
-    if (threads < 0 || threads > 1024) throw UsageError("--threads: must be in 0..1024 (0: all cores)");
     settings.integrator.depth = depth;
     if (epsilon) {
         if (!(*epsilon > 0.0)) throw UsageError("--epsilon: must be positive");
@@ -156,7 +155,7 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
     settings.seed = seed;
-    settings.threads = threads;
+    settings.threads = threadCount();
     if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {
         throw UsageError("--noise-threshold: must be in 0..10 (0: off)");
     }
@@ -172,6 +171,11 @@ SceneBundle RenderOptions::readSceneBundle() const {
         scene.empty() ? bundledScene("cornell") : std::filesystem::path(scene), cameraPath, readOptions());
     if (!env.empty() && env != "none") bundle.environmentMap = SceneFile{env, readExrFile(env)};
     return bundle;
+}
+
+int RenderOptions::threadCount() const {
+    if (threads < 0 || threads > 1024) throw UsageError("--threads: must be in 0..1024 (0: all cores)");
+    return threads;
 }
 
 BackdropSetting RenderOptions::backdrop() const {

@@ -48,6 +48,8 @@ struct RenderOptions {
     RenderSettings renderSettings(const Scene& scene) const;
     // What camera rays that miss show (--background); throws strata::Error naming the option.
     BackdropSetting backdrop() const;
+    // --threads, checked (0: all cores); throws strata::UsageError naming the option.
+    int threadCount() const;
     // Reads the scene's files (the scene file and those it names, its description, the camera
     // file) and the --env map without parsing them, confined to the scene's folder unless
     // allowOutsideFiles (the --env map, the user's own, is not).

@@ -8,6 +8,7 @@
 
 #include "bench/process_memory.h"
 #include "io/auto_exposure.h"
+#include "io/image_io.h"
 #include "util/error.h"
 #include "render_options.h"
 #include "usage.h"
@@ -48,6 +49,8 @@ void ViewCommand::run() const {
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
     const BackdropSetting backdrop = render.backdrop();
+    // EXR maps, the --reference image and saved images are decoded and encoded on the render's threads.
+    setExrThreads(render.threadCount());
     if (!screenshot.empty()) {
         if (frames == 0) throw UsageError("--screenshot needs --frames N");
         if (checkOutputOption("--screenshot", screenshot) != ImageFormat::Png) {

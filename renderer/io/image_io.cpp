@@ -9,7 +9,9 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfThreading.h>
 #include <stb_image_write.h>
+#include <tbb/info.h>
 
 #include "io/exr_header.h"
 #include "io/output_file.h"
@@ -169,6 +171,12 @@ void requirePlausibleImageSize(long long width, long long height, size_t fileByt
         throw Error(name + ": a " + size + " image cannot be stored in " + std::to_string(fileBytes) +
                     " bytes (truncated or corrupt)");
     }
+}
+
+void setExrThreads(int threads) {
+    const int count = threads > 0 ? threads : tbb::info::default_concurrency();
+    // A pool of one thread would only hand the work from the caller to it.
+    Imf::setGlobalThreadCount(count > 1 ? count : 0);
 }
 
 Image readExr(const std::filesystem::path& path) { return readExr(readExrFile(path), path.string()); }

@@ -51,6 +51,11 @@ inline constexpr long long kDensestPixelsPerByte = 8 * 1032;
 // allocating for pixels the file does not hold.
 void requirePlausibleImageSize(long long width, long long height, size_t fileBytes, const std::string& name,
                                long long maxPixelsPerByte = kDensestPixelsPerByte);
+// OpenEXR compresses and decompresses an EXR's blocks of lines on a pool of threads that is the
+// process's own (OpenEXR's global pool). This sizes it for a command's --threads: `threads`
+// threads, 0 for one per core the process may use; with 1 (and until called) the calling thread
+// does the work alone. The bytes written and the pixels read are the same for any count.
+void setExrThreads(int threads);
 // Reads the R, G, B (and A, when there is one) channels of an EXR file as linear float; throws
 // strata::Error naming the file, before anything is allocated for a header the file does not hold
 // the pixels of (readExrHeader).

@@ -3,11 +3,13 @@
 #include <fstream>
 #include <set>
 #include <unistd.h>
+#include <tbb/info.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfThreading.h>
 
 #include "film/accumulation_buffer.h"
 #include "util/error.h"
@@ -85,6 +87,35 @@ TEST_CASE("image io: an image's alpha goes to the EXR's A channel and back, a re
     const Image means = buffer.meanImage();
     CHECK(means.alpha == std::vector<float>{0.5f, 0.0f});
     CHECK(means.pixels[0] == glm::vec3(0.75f));
+}
+
+TEST_CASE("image io: an EXR written and read on several threads is the same, byte for byte") {
+    const auto dir = test::scratchDir("exr-threads");
+    // 100 rows: seven of the 16-row blocks that ZIP compresses apart, the last one short.
+    Image image{64, 100, {}};
+    for (int i = 0; i < image.width * image.height; ++i) {
+        const auto u = static_cast<float>((i * 2654435761u) >> 8) * 0x1p-24f;
+        image.pixels.emplace_back(u, 1.0f - u, 100.0f * u * u);
+        image.alpha.push_back(static_cast<float>(i % 7) / 6.0f);
+    }
+    const auto bytesOf = [](const std::filesystem::path& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    setExrThreads(1);
+    CHECK(Imf::globalThreadCount() == 0);  // the caller's thread alone
+    writeImage(dir / "one.exr", image);
+    setExrThreads(4);
+    CHECK(Imf::globalThreadCount() == 4);
+    writeImage(dir / "four.exr", image);
+    const Image back = readExr(dir / "one.exr");
+    const int cores = tbb::info::default_concurrency();
+    setExrThreads(0);
+    CHECK(Imf::globalThreadCount() == (cores > 1 ? cores : 0));
+    setExrThreads(1);
+    CHECK(bytesOf(dir / "one.exr") == bytesOf(dir / "four.exr"));
+    CHECK(back.pixels == image.pixels);
+    CHECK(back.alpha == image.alpha);
 }
 
 TEST_CASE("image io: PFM holds little-endian floats, bottom row first") {
