@@ -237,6 +237,9 @@ LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environmen
     SceneBudget budget = sceneBudget();
     std::vector<std::string> warnings;
     const Environment given = optionsEnvironment(*this, files, budget, warnings);
+    // Decoded, the map's file is not needed again: its bytes, as many as the map's own, are not
+    // kept with the scene for the render's life.
+    files.environmentMap.reset();
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
                                             budget);
     loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
