@@ -147,8 +147,18 @@ std::string_view utf8TextOf(const std::string& file, const std::string& name, st
     return view.substr(0, 3) == "\xEF\xBB\xBF" ? view.substr(3) : view;
 }
 
+// Whether the line's first word is `key` (splitWords' words, without splitting the line).
+bool startsWithWord(std::string_view line, std::string_view key) {
+    const size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos || line.substr(first, key.size()) != key) return false;
+    const size_t after = first + key.size();
+    return after == line.size() || line[after] == ' ' || line[after] == '\t' || line[after] == '\r';
+}
+
+// visit(line number, words) for every line with words, or only for those whose first word is
+// `onlyKey` when one is given (the others are not split).
 template <typename Visit>
-void forEachLine(const std::string& file, const std::string& name, Visit visit) {
+void forEachLine(const std::string& file, const std::string& name, Visit visit, std::string_view onlyKey = {}) {
     std::string decoded;
     const std::string_view text = utf8TextOf(file, name, decoded);
     size_t lineNumber = 0;
@@ -159,10 +169,11 @@ void forEachLine(const std::string& file, const std::string& name, Visit visit) 
         if (end == std::string::npos) end = text.size();
         ++lineNumber;
         std::string_view line = text.substr(start, end - start);
+        start = end + 1;
         if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        if (!onlyKey.empty() && !startsWithWord(line, onlyKey)) continue;
         splitWords(line, words);
         if (!words.empty()) visit(lineNumber, words);
-        start = end + 1;
     }
 }
 
@@ -231,6 +242,11 @@ struct ObjScan {
     std::vector<std::string> warnings;
 };
 
+// The file names of an mtllib line, each with the line.
+void addLibraries(std::vector<NamedLine>& libraries, size_t line, const std::vector<std::string_view>& words) {
+    for (size_t i = 1; i < words.size(); ++i) libraries.push_back({std::string(words[i]), line});
+}
+
 ObjScan validateObj(const std::string& text, const std::string& name) {
     ObjScan scan;
     size_t vertices = 0;
@@ -271,11 +287,22 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
             if (words.size() < 2) {
                 scan.warnings.push_back(name + ":" + std::to_string(line) + ": mtllib names no file");
             }
-            for (size_t i = 1; i < words.size(); ++i) scan.libraries.push_back({std::string(words[i]), line});
+            addLibraries(scan.libraries, line, words);
         }
     });
     scan.vertices = vertices;
     return scan;
+}
+
+// The OBJ's mtllib files as validateObj finds them, the rest of the file unchecked: all that
+// reading the scene's files needs (parsing checks the whole file).
+std::vector<NamedLine> materialLibraries(const std::string& text, const std::string& name) {
+    std::vector<NamedLine> libraries;
+    forEachLine(
+        text, name,
+        [&](size_t line, const std::vector<std::string_view>& words) { addLibraries(libraries, line, words); },
+        "mtllib");
+    return libraries;
 }
 
 // A file of vertices (a point cloud, p statements) or lines but no face has nothing to render:
@@ -376,6 +403,7 @@ std::string objForTinyobj(const std::string& text, const std::string& name,
     for (size_t i = 0; i < materials.size(); ++i) byName.emplace(materials[i].name, i);
     std::set<std::string> undefined;
     std::string kept = materials.empty() ? "" : "mtllib materials.mtl\n";
+    kept.reserve(kept.size() + text.size());  // about what is kept, so it is not copied as it grows
     forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "usemtl") {
@@ -673,7 +701,7 @@ std::vector<SceneFile> readObjScene(const std::filesystem::path& path, SceneFold
         return std::any_of(files.begin(), files.end(), [&](const SceneFile& file) { return file.name == name; });
     };
     const std::string objName = printable(path.string());
-    for (const auto& library : validateObj(files.front().bytes, objName).libraries) {
+    for (const auto& library : materialLibraries(files.front().bytes, objName)) {
         if (known(library.name)) continue;
         // A missing library is left out: parsing warns and gives its faces the default material.
         auto bytes = folder.read(library.name, objName + ":" + std::to_string(library.line) + ": mtllib");

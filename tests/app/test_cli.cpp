@@ -69,7 +69,7 @@ TEST_CASE("cli: bad options and bad files give one line naming them and a non-ze
     const auto dir = test::scratchDir("cli-bad");
     std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 zero\n";
     std::ofstream(dir / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    std::ofstream(dir / "bad.json") << "{\"position\": [0,0,0],\n \"look_at\": }";
+    std::ofstream(dir / "bad-camera.json") << "{\"position\": [0,0,0],\n \"look_at\": }";
     struct Case {
         std::string arguments;
         std::string mentions;
@@ -87,7 +87,7 @@ TEST_CASE("cli: bad options and bad files give one line naming them and a non-ze
         {"render " + furnace() + " --bogus", "--bogus"},
         {"render " + (dir / "absent.obj").string(), "absent.obj"},
         {"render " + (dir / "bad.obj").string(), "bad.obj:2"},
-        {"render " + (dir / "good.obj").string() + " --camera " + (dir / "bad.json").string(), "bad.json"},
+        {"render " + (dir / "good.obj").string() + " --camera " + (dir / "bad-camera.json").string(), "bad-camera.json"},
         {"render " + (dir / "good.obj").string() + " --camera " + (dir / "nope.json").string(), "nope.json"},
         {"samples --passes 0", "--passes"},
         {"samples --sampler nope", "--sampler"},

@@ -283,6 +283,22 @@ TEST_CASE("obj: files on disk, a missing MTL is a warning naming it and its line
     CHECK_THROWS_WITH_AS(loadObjFile(dir / "none.obj"), doctest::Contains("none.obj: cannot open"), Error);
 }
 
+TEST_CASE("obj: reading finds the mtllib files as parsing does, and leaves the other lines to parsing") {
+    const auto dir = test::scratchDir("obj-libraries");
+    for (const char* name : {"a.mtl", "b.mtl", "c.mtl", "d.mtl"}) std::ofstream(dir / name) << kMtl;
+    // Indented, tab-separated, commented; a word that only starts with mtllib and a comment are not
+    // statements. Line 6 is malformed: reading does not check it, parsing names it.
+    std::ofstream(dir / "s.obj") << "  mtllib a.mtl\n\tmtllib\tb.mtl c.mtl # d.mtl\nmtllibs d.mtl\n# mtllib d.mtl\n"
+                                    "v 0 0 0\nv 1 0\n";
+    SceneFolder folder(dir / "s.obj", {});
+    const auto files = readObjScene(dir / "s.obj", folder);
+    std::vector<std::string> names;
+    for (const SceneFile& file : files) names.push_back(file.name);
+    CHECK(names == std::vector<std::string>{"s.obj", "a.mtl", "b.mtl", "c.mtl"});
+    CHECK_THROWS_WITH_AS(loadObjFile(dir / "s.obj"), doctest::Contains("s.obj:6: 'v' takes 3 to 7 numbers, got 2"),
+                         Error);
+}
+
 TEST_CASE("obj: the models of Debian's assimp-testmodels load or are refused in one line") {
     const std::filesystem::path folder = "/usr/share/assimp/models/OBJ";
     if (!std::filesystem::is_directory(folder)) {
