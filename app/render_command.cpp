@@ -72,7 +72,9 @@ void RenderCommand::run() const {
     setExrThreads(render.threads);
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
     const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
-    const RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
+    RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
+    // The image is all that is written: no pixel's error estimates (but adaptive sampling's).
+    settings.pixelErrors = PixelErrors::NotKept;
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);
     if (job.isRoot()) {

@@ -11,14 +11,15 @@
 
 namespace strata {
 
-AccumulationBuffer::AccumulationBuffer(int width, int height) : width_(width), height_(height) {
+AccumulationBuffer::AccumulationBuffer(int width, int height, PixelErrors errors) : width_(width), height_(height) {
     if (width < 1 || height < 1) throw Error("image size must be at least 1x1");
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     resizePrefaulted(sum_, n);
-    resizePrefaulted(luminanceSquares_, n);
     resizePrefaulted(sampleCount_, n);
     resizePrefaulted(surfaceSamples_, n);
     resizePrefaulted(dropped_, n);
+    if (errors == PixelErrors::NotKept) return;
+    resizePrefaulted(luminanceSquares_, n);
     resizePrefaulted(openPassLuminance_, n);
     resizePrefaulted(openPassSamples_, n);
     resizePrefaulted(passMeanSum_, n);
@@ -32,17 +33,18 @@ void AccumulationBuffer::addSample(size_t pixel, const glm::vec3& value, bool on
         return;
     }
     const glm::dvec3 v(value);
-    const double y = luminance(v);
     sum_[pixel] += v;
-    luminanceSquares_[pixel] += y * y;
     ++sampleCount_[pixel];
     if (onSurface) ++surfaceSamples_[pixel];
+    if (!keepsErrors()) return;
+    const double y = luminance(v);
+    luminanceSquares_[pixel] += y * y;
     openPassLuminance_[pixel] += y;
     ++openPassSamples_[pixel];
 }
 
 void AccumulationBuffer::completePass(size_t pixel) {
-    if (openPassSamples_[pixel] == 0) return;
+    if (!keepsErrors() || openPassSamples_[pixel] == 0) return;
     const double passMean = openPassLuminance_[pixel] / openPassSamples_[pixel];
     passMeanSum_[pixel] += passMean;
     passMeanSquares_[pixel] += passMean * passMean;
@@ -84,11 +86,22 @@ double standardErrorOfMean(double sum, double squares, uint32_t n) {
 }
 }  // namespace
 
+void AccumulationBuffer::requireErrors() const {
+    if (!keepsErrors()) throw Error("the accumulation buffer keeps no error estimates");
+}
+
+uint32_t AccumulationBuffer::completedPasses(size_t pixel) const {
+    requireErrors();
+    return passCount_[pixel];
+}
+
 double AccumulationBuffer::sampleStandardError(size_t pixel) const {
+    requireErrors();
     return standardErrorOfMean(luminance(sum_[pixel]), luminanceSquares_[pixel], sampleCount_[pixel]);
 }
 
 double AccumulationBuffer::passStandardError(size_t pixel) const {
+    requireErrors();
     return standardErrorOfMean(passMeanSum_[pixel], passMeanSquares_[pixel], passCount_[pixel]);
 }
 

@@ -10,6 +10,10 @@
 //
 // It also counts the samples whose camera ray found a surface, so that a pixel's coverage (the
 // share of its camera rays that hit the scene: the EXR's alpha) is known apart from its colour.
+//
+// The error estimates take 40 of the buffer's 76 bytes a pixel and three stores per sample; a
+// buffer whose owner only reads its image can leave them out (PixelErrors::NotKept) and hold the
+// sums and counts alone, 36 bytes a pixel.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -22,9 +26,12 @@ namespace strata {
 
 struct Image;
 
+// Whether a buffer keeps the per-sample and per-pass error estimates (above).
+enum class PixelErrors { Kept, NotKept };
+
 class AccumulationBuffer {
 public:
-    AccumulationBuffer(int width, int height);
+    AccumulationBuffer(int width, int height, PixelErrors errors = PixelErrors::Kept);
 
     // Not thread-safe for one pixel; distinct pixels may be written concurrently. `onSurface`:
     // the sample's camera ray found a surface.
@@ -37,16 +44,19 @@ public:
     int height() const { return height_; }
     size_t pixelCount() const { return sampleCount_.size(); }
 
+    bool keepsErrors() const { return !passCount_.empty(); }
+
     glm::dvec3 mean(size_t pixel) const;
     uint32_t sampleCount(size_t pixel) const { return sampleCount_[pixel]; }
-    uint32_t completedPasses(size_t pixel) const { return passCount_[pixel]; }
-    // The share of the pixel's samples whose camera ray found a surface; 0 without samples.
-    double coverage(size_t pixel) const;
+    // The next three need the error estimates kept; without them they throw strata::Error.
+    uint32_t completedPasses(size_t pixel) const;
     // Standard error of the pixel's mean luminance from the per-sample variance (i.i.d. view).
     double sampleStandardError(size_t pixel) const;
     // Standard error of the mean luminance from the spread of completed pass means; 0 with
     // fewer than 2 passes.
     double passStandardError(size_t pixel) const;
+    // The share of the pixel's samples whose camera ray found a surface; 0 without samples.
+    double coverage(size_t pixel) const;
     uint64_t droppedSamples() const;
     // Mean of all pixel means (linear RGB).
     glm::dvec3 imageMean() const;
@@ -59,10 +69,13 @@ public:
     // combine by element-wise addition: that is how the MPI ranks' buffers are reduced
     // (app/render_job.cpp). Counts add exactly; the doubles' sum depends on the order of
     // additions, by at most a few ulps relative for non-negative radiance (see render_job.cpp).
+    // Without the error estimates their arrays are empty.
     std::array<std::span<double>, 5> realArrays();
     std::array<std::span<uint32_t>, 5> countArrays();
 
 private:
+    void requireErrors() const;  // throws unless they are kept
+
     int width_;
     int height_;
     std::vector<glm::dvec3> sum_;

@@ -18,13 +18,15 @@ struct AdaptiveSettings {
     double threshold = 0.0;   // relative standard error at which a pixel is done; 0: off
     uint32_t minPasses = 4;   // never judge a pixel on fewer passes
     double luminanceFloor = 1e-3;  // keeps black pixels from dividing by zero
+
+    bool enabled() const { return threshold > 0.0; }
 };
 
 class AdaptiveSampling {
 public:
     AdaptiveSampling(const AdaptiveSettings& settings, size_t pixelCount);
 
-    bool enabled() const { return settings_.threshold > 0.0; }
+    bool enabled() const { return settings_.enabled(); }
     // Re-evaluates every pixel not yet done; returns the number still active.
     size_t update(const AccumulationBuffer& buffer);
     // 1 for pixels that receive no more passes; indexable by pixel.

@@ -36,6 +36,9 @@ struct RenderSettings {
     int niceness = 0;
     // Which pixels stop receiving passes; applied by RenderSession (render_session.h).
     AdaptiveSettings adaptive{};
+    // Whether a RenderSession's buffer keeps each pixel's error estimates (accumulation_buffer.h)
+    // for its owner to read; adaptive sampling keeps them whatever this says.
+    PixelErrors pixelErrors = PixelErrors::Kept;
     // What camera rays that leave the scene show.
     BackdropSetting backdrop{};
 };

@@ -20,7 +20,8 @@ double secondsSince(Clock::time_point start) {
 RenderSession::RenderSession(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                              PassRange passes)
     : passes_(passes),
-      buffer_(camera.width(), camera.height()),
+      buffer_(camera.width(), camera.height(),
+              settings.adaptive.enabled() ? PixelErrors::Kept : settings.pixelErrors),
       renderer_(std::make_unique<ProgressiveRenderer>(scene, camera, settings)),
       adaptive_(settings.adaptive, buffer_.pixelCount()) {
     if (passes.end < passes.begin) throw Error("a session's pass range must not end before it begins");

@@ -8,6 +8,7 @@
 #include "integrator/progressive_renderer.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "util/error.h"
 
 using namespace strata;
 
@@ -29,6 +30,41 @@ TEST_CASE("accumulation: mean, counts and the two standard errors") {
     CHECK(buffer.passStandardError(0) == doctest::Approx(1.0));
     CHECK(buffer.mean(1).x == 0.0);  // no samples: zero, not NaN
     CHECK(buffer.passStandardError(1) == 0.0);
+}
+
+TEST_CASE("accumulation: a buffer without error estimates has the same means, coverage and drops") {
+    AccumulationBuffer kept(2, 1);
+    AccumulationBuffer bare(2, 1, PixelErrors::NotKept);
+    CHECK(kept.keepsErrors());
+    CHECK(!bare.keepsErrors());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (AccumulationBuffer* buffer : {&kept, &bare}) {
+        buffer->addSample(0, glm::vec3(0.25f, 1.0f, 3.0f), true);
+        buffer->addSample(0, glm::vec3(2.0f), false);
+        buffer->addSample(1, glm::vec3(nan), true);
+        buffer->addSample(1, glm::vec3(0.5f), true);
+        buffer->completePass(0);
+        buffer->completePass(1);
+    }
+    for (size_t p = 0; p < 2; ++p) {
+        CHECK(bare.mean(p) == kept.mean(p));
+        CHECK(bare.sampleCount(p) == kept.sampleCount(p));
+        CHECK(bare.coverage(p) == kept.coverage(p));
+    }
+    CHECK(bare.droppedSamples() == 1);
+    CHECK(bare.imageMean() == kept.imageMean());
+    CHECK(bare.meanImage().pixels == kept.meanImage().pixels);
+    CHECK(bare.meanImage().alpha == kept.meanImage().alpha);
+    CHECK_THROWS_AS(bare.completedPasses(0), Error);
+    CHECK_THROWS_AS(bare.sampleStandardError(0), Error);
+    CHECK_THROWS_AS(bare.passStandardError(0), Error);
+    // The arrays an MPI reduction adds: the sums' and counts' only (the RGB sums, 3 a pixel).
+    size_t reals = 0;
+    for (const auto array : bare.realArrays()) reals += array.size();
+    size_t counts = 0;
+    for (const auto array : bare.countArrays()) counts += array.size();
+    CHECK(reals == 3 * 2);
+    CHECK(counts == 3 * 2);
 }
 
 TEST_CASE("accumulation: non-finite samples are dropped and counted, never added") {

@@ -97,6 +97,23 @@ TEST_CASE("render session: a noise budget stops at the pass that finishes the la
     CHECK(session.counters().paths == paths);
 }
 
+TEST_CASE("render session: a buffer without error estimates renders the same image, unless adaptive sampling needs them") {
+    const LoadedScene& cornell = loadedCornell();
+    const Camera camera(cornell.settings.pose, 6, 4);
+    RenderSettings settings = strata24(3, 11, 2);
+    RenderSession kept(cornell.scene, camera, settings, {0, 2});
+    settings.pixelErrors = PixelErrors::NotKept;
+    RenderSession bare(cornell.scene, camera, settings, {0, 2});
+    kept.run({});
+    bare.run({});
+    CHECK(kept.buffer().keepsErrors());
+    CHECK(!bare.buffer().keepsErrors());
+    CHECK(bare.buffer().meanImage().pixels == kept.buffer().meanImage().pixels);
+    settings.adaptive.threshold = 0.5;
+    const RenderSession adaptive(cornell.scene, camera, settings, {0, 2});
+    CHECK(adaptive.buffer().keepsErrors());
+}
+
 TEST_CASE("render session: a cancel from the progress callback stops before the next pass") {
     const Camera camera(loadedCornell().settings.pose, 12, 12);
     RenderSession session(loadedCornell().scene, camera, strata24(2, 1, 2));
