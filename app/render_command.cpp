@@ -53,7 +53,7 @@ Tonemap RenderCommand::checkOptions(const RenderJob& job) const {
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
     render.backdrop();  // a bad --background before the scene is read
-    render.threadCount();
+    render.threadCount();  // a bad --threads too
     // Adaptive sampling decides per pixel from all its passes; ranks each hold only some.
     if (render.noiseThreshold > 0.0 && job.ranks() > 1) {
         throw UsageError("--noise-threshold: not available under MPI");
@@ -73,7 +73,8 @@ void RenderCommand::run() const {
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
     const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });
-    // The image is all that is written: no pixel's error estimates (but adaptive sampling's).
+    // Only the image is written: the buffer keeps no pixel's error estimates unless adaptive
+    // sampling needs them (render_session.cpp).
     settings.pixelErrors = PixelErrors::NotKept;
     const Camera camera = job.collectively([&] { return render.makeCamera(loaded); });
     const auto dark = whyBlack(loaded.scene, settings.integrator);

@@ -49,7 +49,8 @@ void ViewCommand::run() const {
         throw UsageError("--exposure: must be in -" + limit + ".." + limit + " stops");
     }
     const BackdropSetting backdrop = render.backdrop();
-    // EXR maps, the --reference image and saved images are decoded and encoded on the render's threads.
+    // EXR maps, the --reference image and saved images are decoded and encoded on the render's
+    // threads.
     setExrThreads(render.threadCount());
     if (!screenshot.empty()) {
         if (frames == 0) throw UsageError("--screenshot needs --frames N");

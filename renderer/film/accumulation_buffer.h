@@ -44,6 +44,7 @@ public:
     int height() const { return height_; }
     size_t pixelCount() const { return sampleCount_.size(); }
 
+    // Whether the error estimates are kept (PixelErrors::Kept).
     bool keepsErrors() const { return !passCount_.empty(); }
 
     glm::dvec3 mean(size_t pixel) const;
