@@ -192,7 +192,7 @@ namespace {
 
 // The environment `options` give, its map decoded from `files` within the scene's texture
 // `budget`; a note on the map to `warnings`.
-Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& files,
+Environment optionsEnvironment(const RenderOptions& options, SceneBundle& files,
                                SceneBudget& budget, std::vector<std::string>& warnings) {
     if (!std::isfinite(options.envRotate)) throw UsageError("--env-rotate: must be a finite angle in degrees");
     Environment environment;
@@ -208,10 +208,12 @@ Environment optionsEnvironment(const RenderOptions& options, const SceneBundle& 
         environment.kind = Environment::Kind::None;
     } else if (files.environmentMap) {
         environment.kind = Environment::Kind::Map;
-        const SceneFile& map = *files.environmentMap;
-        // Decoded first: the scene's textures then share what the map leaves of the budget.
-        const EnvironmentMapFile file =
-            readEnvironmentMap(map.bytes, map.name, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
+        SceneFile& map = *files.environmentMap;
+        // Decoded first: the scene's textures then share what the map leaves of the budget. The
+        // file's bytes are taken and freed once decoded: as many as the map's own, they are not
+        // kept with the scene for the render's life.
+        const EnvironmentMapFile file = readEnvironmentMap(
+            std::move(map.bytes), map.name, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
         budget.textureBytesSpent += file.bytes;
         if (file.zeroedNegatives > 0) {
             warnings.push_back(map.name + ": " + std::to_string(file.zeroedNegatives) +
@@ -237,9 +239,6 @@ LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environmen
     SceneBudget budget = sceneBudget();
     std::vector<std::string> warnings;
     const Environment given = optionsEnvironment(*this, files, budget, warnings);
-    // Decoded, the map's file is not needed again: its bytes, as many as the map's own, are not
-    // kept with the scene for the render's life.
-    files.environmentMap.reset();
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
                                             budget);
     loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());

@@ -46,6 +46,25 @@ EnvironmentMapFile checkedMap(Image map, const std::string& name) {
     return file;
 }
 
+// A map's texels as decoded from its file, within `budget`, and what they take of it.
+struct DecodedMap {
+    Image image;
+    uint64_t bytes;
+};
+
+DecodedMap decodedMap(std::string_view bytes, const std::string& name, TextureBudget& budget) {
+    const TextureSize size = readExrHeader(bytes, name);
+    budget.reserve(size, name + ": the environment map");
+    return {readExr(bytes, name), size.bytes()};
+}
+
+// The decoded map checked, and its sampling distribution built (EnvironmentMap).
+EnvironmentMapFile mapOf(DecodedMap decoded, const std::string& name) {
+    EnvironmentMapFile file = checkedMap(std::move(decoded.image), name);
+    file.bytes = decoded.bytes;
+    return file;
+}
+
 }  // namespace
 
 Environment resolveEnvironment(const Environment& given, bool lightsOutshineSky) {
@@ -84,15 +103,17 @@ std::unique_ptr<Light> makeEnvironmentLight(const Environment& resolved, float s
 
 EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path, TextureBudget budget) {
     if (!std::filesystem::is_regular_file(path)) throw Error(path.string() + ": no such EXR file");
-    return readEnvironmentMap(readTextFile(path, "EXR file"), path.string(), budget);
+    return readEnvironmentMap(readTextFile(path, "EXR file"), path.string(), budget);  // the bytes taken
 }
 
 EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name, TextureBudget budget) {
-    const TextureSize size = readExrHeader(bytes, name);
-    budget.reserve(size, name + ": the environment map");
-    EnvironmentMapFile file = checkedMap(readExr(bytes, name), name);
-    file.bytes = size.bytes();
-    return file;
+    return mapOf(decodedMap(bytes, name, budget), name);
+}
+
+EnvironmentMapFile readEnvironmentMap(std::string&& bytes, const std::string& name, TextureBudget budget) {
+    DecodedMap decoded = decodedMap(bytes, name, budget);
+    std::string().swap(bytes);
+    return mapOf(std::move(decoded), name);
 }
 
 }  // namespace strata

@@ -61,5 +61,9 @@ EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path,
 // The same from the EXR file's bytes, as a scene bundle carries them; `name` stands for the file.
 EnvironmentMapFile readEnvironmentMap(std::string_view bytes, const std::string& name,
                                       TextureBudget budget = TextureBudget());
+// The same, taking the bytes: they are freed once decoded, before the sampling distribution is
+// built, so that the file (as large as the map) and the distribution are never held at once.
+EnvironmentMapFile readEnvironmentMap(std::string&& bytes, const std::string& name,
+                                      TextureBudget budget = TextureBudget());
 
 }  // namespace strata

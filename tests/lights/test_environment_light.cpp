@@ -249,6 +249,18 @@ TEST_CASE("environment: the default rule, and readEnvironmentMap refuses what is
     const EnvironmentMapFile good = readEnvironmentMap(dir / "good.exr");
     CHECK(good.map->image().pixels == labelledMap().pixels);
     CHECK(good.zeroedNegatives == 0);
+    // From a bundle's bytes, borrowed or taken (then freed once decoded): the same map.
+    std::string bytes = readExrFile(dir / "good.exr");
+    const EnvironmentMapFile borrowed = readEnvironmentMap(std::string_view(bytes), "good.exr");
+    CHECK(!bytes.empty());
+    const EnvironmentMapFile taken = readEnvironmentMap(std::move(bytes), "good.exr");
+    CHECK(bytes.empty());  // taken, and freed once decoded
+    for (const EnvironmentMapFile* file : {&borrowed, &taken}) {
+        CHECK(file->map->image().pixels == labelledMap().pixels);
+        CHECK(file->bytes == good.bytes);
+        CHECK(file->map->sampledIntegral() == good.map->sampledIntegral());
+        CHECK(file->map->distribution().pdf(glm::vec2(0.3f, 0.6f)) == good.map->distribution().pdf(glm::vec2(0.3f, 0.6f)));
+    }
     // Lossy-compression ringing (texels a little below 0) reads as 0: the mean radiance is about
     // 22 here, so -1 is within 5% of it.
     Image ringing = labelledMap();
