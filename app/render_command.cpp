@@ -69,7 +69,7 @@ void RenderCommand::run() const {
     RenderJob job;
     const Tonemap tonemapKind = job.collectively([&] { return checkOptions(job); });
     // An EXR map in the scene is decoded, and the EXR output encoded, on the render's threads.
-    setExrThreads(render.threads);
+    setExrThreads(render.threadCount());
     SceneBundle files = job.shareSceneBundle([&] { return render.readSceneBundle(); });
     const LoadedScene loaded = job.collectively([&] { return render.parseScene(std::move(files)); });
     RenderSettings settings = job.collectively([&] { return render.renderSettings(loaded.scene); });

@@ -29,14 +29,17 @@ namespace {
 constexpr float kDefaultAlbedo = 0.8f;
 const char* const kDefaultMaterialNote = "using grey Kd 0.8";
 
+// What separates a line's words.
+bool isWordSeparator(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
 // The line's words, into `words` (cleared first: forEachLine keeps one vector for every line).
 void splitWords(std::string_view line, std::vector<std::string_view>& words) {
     words.clear();
     size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        while (i < line.size() && isWordSeparator(line[i])) ++i;
         size_t j = i;
-        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
+        while (j < line.size() && !isWordSeparator(line[j])) ++j;
         if (j > i) words.push_back(line.substr(i, j - i));
         i = j;
     }
@@ -149,10 +152,11 @@ std::string_view utf8TextOf(const std::string& file, const std::string& name, st
 
 // Whether the line's first word is `key` (splitWords' words, without splitting the line).
 bool startsWithWord(std::string_view line, std::string_view key) {
-    const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos || line.substr(first, key.size()) != key) return false;
+    size_t first = 0;
+    while (first < line.size() && isWordSeparator(line[first])) ++first;
+    if (line.substr(first, key.size()) != key) return false;
     const size_t after = first + key.size();
-    return after == line.size() || line[after] == ' ' || line[after] == '\t' || line[after] == '\r';
+    return after == line.size() || isWordSeparator(line[after]);
 }
 
 // visit(line number, words) for every line with words, or only for those whose first word is
