@@ -105,6 +105,20 @@ CommandResult runStrata(const std::string& arguments) {
     return runCommand(std::string(STRATA_BINARY) + " " + arguments);
 }
 
+int plantLibraryDecoys(const std::filesystem::path& program, const std::filesystem::path& dir) {
+    const CommandResult listed = runCommand("ldd " + program.string());
+    const std::regex library(R"re(^\s*(lib[^ /]+\.so[^ ]*) => )re");
+    int planted = 0;
+    std::istringstream lines(listed.out);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch match;
+        if (!std::regex_search(line, match, library)) continue;
+        writeFile(dir / match[1].str(), "not a shared library\n");
+        ++planted;
+    }
+    return planted;
+}
+
 std::optional<std::string> obeyingPermissions() {
     if (geteuid() != 0) return "";
     if (std::system("command -v setpriv >/dev/null 2>&1") != 0) return std::nullopt;

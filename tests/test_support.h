@@ -80,6 +80,10 @@ std::set<std::string> includedFolders(const std::string& folder);
 CommandResult runCommand(const std::string& commandLine);
 // Runs the strata binary with `arguments` (already shell-quoted where needed).
 CommandResult runStrata(const std::string& arguments);
+// Fills `dir` with a file of garbage bytes named after each shared library `program` loads (as
+// `ldd` lists them), as a downloaded model's folder could hold; returns how many (0 when `ldd`
+// fails). A program that looked for its libraries in the current folder fails to start in `dir`.
+int plantLibraryDecoys(const std::filesystem::path& program, const std::filesystem::path& dir);
 // A command-line prefix under which a child obeys file permissions as other users do: empty for
 // them, for root setpriv dropping the capabilities that override them (CAP_DAC_OVERRIDE,
 // CAP_DAC_READ_SEARCH). Empty optional when root has no setpriv.

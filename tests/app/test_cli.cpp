@@ -59,6 +59,15 @@ TEST_CASE("cli: --version prints the version, --help one line per command") {
     }
 }
 
+TEST_CASE("cli: the program loads its libraries from the system, not from the folder it is run in") {
+    const auto dir = test::scratchDir("cli-decoys");
+    REQUIRE(test::plantLibraryDecoys(STRATA_BINARY, dir) >= 5);
+    const auto result = test::runCommand("cd " + dir.string() + " && " + STRATA_BINARY + " render " + furnace() +
+                                         " --width 8 --height 8 --spp 24 --depth 1 --json");
+    REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+    CHECK(nlohmann::json::parse(result.out)["mean_rgb"][0].get<double>() > 0.0);
+}
+
 TEST_CASE("cli: render with no scene renders the bundled Cornell box, from the source tree in a build") {
     const auto result = test::runStrata("render --width 8 --height 8 --spp 24 --json");
     REQUIRE_MESSAGE(result.exitCode == 0, result.err);

@@ -67,6 +67,8 @@ TEST_CASE("install: the installed strata renders, views and benches its bundled 
     const fs::path strata = installInto(prefix);
     CHECK(fs::is_regular_file(prefix / "share" / "strata" / "NOTICE"));
     CHECK(!fs::exists(prefix / "share" / "strata" / "readme"));  // README and docs/ pictures stay out
+    // Run among files named like its libraries, which it must not load from there.
+    REQUIRE(test::plantLibraryDecoys(strata, work) >= 5);
 
     checkRendersBundledScene(strata, work);
 
