@@ -13,7 +13,7 @@ double Entrant::medianCpu() const { return median(cpu); }
 std::optional<std::string> race(std::vector<Entrant>& entrants, int repeats,
                                 const std::filesystem::path& log, const std::string& label) {
     const size_t count = entrants.size();
-    ProgressReporter progress(label, count * static_cast<uint64_t>(repeats), 1);
+    ProgressReporter progress(label, count * static_cast<uint64_t>(repeats), "run");
     uint64_t runs = 0;
     for (int round = 0; round < repeats; ++round) {
         for (size_t k = 0; k < count; ++k) {

@@ -143,7 +143,7 @@ std::string runThroughput(const ThroughputSettings& settings) {
         return o;
     };
     std::string summary;
-    ProgressReporter progress("throughput", 8, 1);
+    ProgressReporter progress("throughput", 7, "stage");
     uint64_t stage = 0;
     auto advance = [&] { progress.update(++stage, 0); };
 

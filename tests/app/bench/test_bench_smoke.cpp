@@ -46,6 +46,8 @@ TEST_CASE("bench_smoke: strata bench --quick finishes, no NaN, error falls as sp
     MESSAGE(result.out);  // the summary, for the CI log
     REQUIRE_MESSAGE(result.exitCode == 0, result.err);
     CHECK(std::filesystem::is_regular_file(dir / "summary.md"));
+    // The throughput section's progress counts its stages, not a render's passes, spp and rate.
+    CHECK_MESSAGE(result.err.find("throughput: stage 7/7, ") != std::string::npos, result.err);
 
     int runs = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
