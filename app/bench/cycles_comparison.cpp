@@ -43,11 +43,14 @@ int equalTimeSpp(TimedSpp a, TimedSpp b, double target, int step) {
 
 std::string cyclesPlotScript(const std::vector<PlotSeries>& series, const std::string& png,
                              const std::string& title) {
+    // The key goes below the axes, a line per series, where no curve can run under it; the
+    // picture grows by its lines.
+    const int height = 400 + 16 * static_cast<int>(series.size());
     std::string script =
-        "set terminal pngcairo noenhanced size 640,440 font ',10'\n"
+        "set terminal pngcairo noenhanced size 640," + std::to_string(height) + " font ',10'\n"
         "set output '" + png + "'\n"
         "set datafile separator ','\n"
-        "set logscale xy\nset format y '%g'\nset grid\nset key top right\n"
+        "set logscale xy\nset format y '%g'\nset grid\nset key outside below vertical Left reverse height 1\n"
         "set xlabel 'seconds (Strata: whole process; Cycles: render() alone)'\n"
         "set ylabel 'relMSE against the reference'\n"
         "set title '" + title + "'\n"

@@ -42,8 +42,8 @@ struct PlotSeries {
     std::string title;
     std::string csv;
 };
-// The gnuplot script drawing relMSE against seconds, log-log, one line with points per series,
-// into `png` (file names relative to the folder gnuplot runs in).
+// The gnuplot script drawing relMSE against seconds, log-log, one line with points per series
+// and the key below the axes, into `png` (file names relative to the folder gnuplot runs in).
 std::string cyclesPlotScript(const std::vector<PlotSeries>& series, const std::string& png,
                              const std::string& title);
 // The rows of each renderer, one point per spp in order of seconds: the plot's data, as CSV

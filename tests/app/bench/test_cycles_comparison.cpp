@@ -70,4 +70,7 @@ TEST_CASE("cycles comparison: one curve per renderer, one point per spp, in orde
     CHECK(script.find("'a.csv' using 'seconds':'relmse' with linespoints lw 2 title 'Cycles', "
                       "'b.csv' using 'seconds':'relmse' with linespoints lw 2 title 'Strata'") != std::string::npos);
     CHECK(script.find("set title 'cornell'") != std::string::npos);
+    // The key below the axes, the picture taller by a line per series.
+    CHECK(script.find("set key outside below") != std::string::npos);
+    CHECK(script.find("size 640,432 ") != std::string::npos);
 }
