@@ -11,19 +11,16 @@ constexpr auto kLogInterval = std::chrono::seconds(5);
 }  // namespace
 
 ProgressReporter::ProgressReporter(std::string label, uint64_t totalPasses, int pathsPerPass)
-    : label_(std::move(label)),
-      total_(totalPasses),
-      step_("pass"),
-      pathsPerPass_(pathsPerPass),
-      terminal_(isatty(STDERR_FILENO) != 0),
-      start_(Clock::now()),
-      lastPrint_(start_) {}
+    : ProgressReporter(std::move(label), totalPasses, "pass", pathsPerPass) {}
 
 ProgressReporter::ProgressReporter(std::string label, uint64_t totalSteps, std::string step)
+    : ProgressReporter(std::move(label), totalSteps, std::move(step), 0) {}
+
+ProgressReporter::ProgressReporter(std::string label, uint64_t total, std::string step, int pathsPerPass)
     : label_(std::move(label)),
-      total_(totalSteps),
+      total_(total),
       step_(std::move(step)),
-      pathsPerPass_(0),
+      pathsPerPass_(pathsPerPass),
       terminal_(isatty(STDERR_FILENO) != 0),
       start_(Clock::now()),
       lastPrint_(start_) {}

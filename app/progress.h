@@ -21,6 +21,7 @@ public:
     double elapsedSeconds() const;
 
 private:
+    ProgressReporter(std::string label, uint64_t total, std::string step, int pathsPerPass);
     void print(uint64_t done, uint64_t paths, bool final);
 
     std::string label_;
