@@ -165,6 +165,19 @@ std::string_view jsonOf(const std::string& bytes, bool binary) {
     return std::string_view(bytes).substr(20, littleEndian32(bytes, 12));
 }
 
+// Refuses a glTF 1.0 file by its version (asset.version "1.0", or the number 1 that some exporters
+// wrote): its lists are objects keyed by name where 2.0 has arrays, and tinygltf, which reads 2.0,
+// would fail on the first of them without naming the version. A later minor version of 2 is read.
+void checkVersion(const nlohmann::json& document, const std::string& path) {
+    const auto asset = document.find("asset");
+    if (asset == document.end() || !asset->is_object()) return;
+    const auto version = asset->find("version");
+    if (version == asset->end() || !(version->is_string() || version->is_number())) return;
+    const std::string text = version->is_string() ? version->get<std::string>() : version->dump();
+    if (text.substr(0, text.find('.')) == "2") return;
+    throw Error(path + ": glTF version " + printable(text) + "; Strata reads version 2");
+}
+
 // Refuses a file that requires an extension Strata does not implement, before tinygltf reads
 // what the extension encodes (a compressed primitive's accessors have no buffer view, say) and
 // fails with a message that does not name it.
@@ -238,6 +251,7 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path,
     nlohmann::json document = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, /*allow_exceptions=*/false);
     std::string rewritten;  // the bytes tinygltf reads when they differ from the file's
     if (document.is_object()) {  // else tinygltf says what is wrong with it
+        checkVersion(document, path);
         checkRequiredExtensions(document, path);
         checkArrays(document, path);
         bool changed = giveMeshoptFallbacksData(document);

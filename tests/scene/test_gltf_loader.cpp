@@ -487,6 +487,15 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     json missing = model.doc;
     missing["buffers"] = json::array({{{"byteLength", 12}, {"uri", "absent.bin"}}});
     CHECK(gltfError(missing.dump()) == "mem/model.gltf: File not found : absent.bin");
+    // glTF 1.0 keys its lists by name: refused by its version, not by the first such list.
+    CHECK(gltfError(R"({"asset": {"version": "1.0"}, "accessors": {"a": {}}})") ==
+          "mem/model.gltf: glTF version 1.0; Strata reads version 2");
+    CHECK(gltfError(R"({"asset": {"version": 1}, "accessors": {"a": {}}})") ==
+          "mem/model.gltf: glTF version 1; Strata reads version 2");
+    Model minor = model;  // a later 2.x is read
+    minor.meshNode({{"attributes", {{"POSITION", positions}}}});
+    minor.doc["asset"]["version"] = "2.1";
+    CHECK(parseGltfScene(bundleOf(minor.gltf())).mesh.triangles.size() == 1);
     const std::string malformed = gltfError(R"({"asset": {"version": "2.0"}, "nodes": [)");
     CHECK(malformed.rfind("mem/model.gltf: ", 0) == 0);
     CHECK(malformed.find("parse error") != std::string::npos);
