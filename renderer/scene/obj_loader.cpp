@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
@@ -16,6 +19,7 @@
 #include "util/components.h"
 #include "util/error.h"
 #include "materials/microfacet.h"
+#include "geometry/polygon_triangulation.h"
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
 #include "scene/scene_textures.h"
@@ -240,7 +244,10 @@ struct ObjScan {
     // "nan" as 0, so its own normals cannot tell.
     std::vector<glm::vec3> normals;
     size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
-    uint64_t triangles = 0;              // the faces' once triangulated (as fans)
+    uint64_t triangles = 0;              // the faces' once triangulated (n - 2 each)
+    uint64_t faces = 0;
+    // Faces of more than 255 corners, which tinyobjloader counts in a byte: (which face, corners).
+    std::vector<std::pair<uint64_t, uint32_t>> wideFaces;
     size_t vertices = 0;
     bool hasLines = false;               // l statements
     std::vector<std::string> warnings;
@@ -273,6 +280,8 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
         } else if (key == "f") {
             if (words.size() < 4) failAt(name, line, "a face needs at least 3 vertices");
             scan.triangles += words.size() - 3;
+            if (words.size() - 1 > UINT8_MAX) scan.wideFaces.emplace_back(scan.faces, static_cast<uint32_t>(words.size() - 1));
+            ++scan.faces;
             for (size_t i = 1; i < words.size(); ++i) {
                 const auto corner = faceCorner(words[i]);
                 if (!corner) failAt(name, line, quote(words[i]) + " is not a face vertex");
@@ -542,7 +551,8 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
                    const std::vector<std::string>& mtlNames, const std::string& mtlText,
                    std::vector<std::string> warnings, LoadReport* report, const SceneBudget& budget) {
     tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
+    // Faces as the file has them: tinyobjloader's own split covers a concave face's notches.
+    config.triangulate = false;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
     if (!reader.ParseFromString(objForTinyobj(objText, objName, materials, warnings), mtlText, config)) {
@@ -594,61 +604,87 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     size_t flatForUnusableNormals = 0;
 
     size_t dropped = 0;
+    TriangulationBudget triangulation{kTriangulationVisits};
+    size_t fannedFaces = 0;
+    std::vector<glm::vec3> facePositions;
+    std::vector<std::array<uint32_t, 3>> faceTriangles;
+    uint64_t faceInFile = 0;
+    auto wideFace = scan.wideFaces.begin();
     for (const auto& shape : reader.GetShapes()) {
         const auto& indices = shape.mesh.indices;
-        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            std::array<uint32_t, 3> tri;
-            std::array<uint32_t, 3> normals = kNoNormals;  // stays so on corners without vn
-            std::array<uint32_t, 3> uvs = kNoUvs;
-            bool cornersHaveNormals = true;
-            bool cornersHaveUvs = true;
-            for (size_t k = 0; k < 3; ++k) {
-                const tinyobj::index_t& corner = indices[3 * f + k];
-                tri[k] = static_cast<uint32_t>(corner.vertex_index);
-                if (tri[k] >= mesh.positions.size()) {
+        size_t firstCorner = 0;
+        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faceInFile) {
+            size_t corners = shape.mesh.num_face_vertices[f];
+            if (wideFace != scan.wideFaces.end() && wideFace->first == faceInFile) corners = (wideFace++)->second;
+            if (corners > indices.size() - firstCorner) throw Error(objName + ": the faces were read inconsistently");
+            const std::span<const tinyobj::index_t> face(indices.data() + firstCorner, corners);
+            firstCorner += corners;
+            facePositions.clear();
+            for (const tinyobj::index_t& corner : face) {
+                if (corner.vertex_index < 0 || static_cast<size_t>(corner.vertex_index) >= mesh.positions.size()) {
                     throw Error(objName + ": a face refers to a missing vertex");
                 }
-                cornersHaveUvs = cornersHaveUvs && corner.texcoord_index >= 0 &&
-                                 static_cast<size_t>(corner.texcoord_index) < mesh.uvs.size();
-                if (cornersHaveUvs) uvs[k] = static_cast<uint32_t>(corner.texcoord_index);
-                cornersHaveNormals = cornersHaveNormals && corner.normal_index >= 0;
-                if (corner.normal_index < 0) continue;
-                const auto normal = static_cast<size_t>(corner.normal_index);
-                if (normal >= normalIndex.size()) {
-                    throw Error(objName + ": a face refers to a missing normal");
+                facePositions.push_back(mesh.positions[static_cast<size_t>(corner.vertex_index)]);
+            }
+            faceTriangles.clear();
+            if (!triangulatePolygon(facePositions, triangulation, faceTriangles)) ++fannedFaces;
+            for (const std::array<uint32_t, 3>& cornersOfTriangle : faceTriangles) {
+                std::array<uint32_t, 3> tri;
+                std::array<uint32_t, 3> normals = kNoNormals;  // stays so on corners without vn
+                std::array<uint32_t, 3> uvs = kNoUvs;
+                bool cornersHaveNormals = true;
+                bool cornersHaveUvs = true;
+                for (size_t k = 0; k < 3; ++k) {
+                    const tinyobj::index_t& corner = face[cornersOfTriangle[k]];
+                    tri[k] = static_cast<uint32_t>(corner.vertex_index);
+                    cornersHaveUvs = cornersHaveUvs && corner.texcoord_index >= 0 &&
+                                     static_cast<size_t>(corner.texcoord_index) < mesh.uvs.size();
+                    if (cornersHaveUvs) uvs[k] = static_cast<uint32_t>(corner.texcoord_index);
+                    cornersHaveNormals = cornersHaveNormals && corner.normal_index >= 0;
+                    if (corner.normal_index < 0) continue;
+                    const auto normal = static_cast<size_t>(corner.normal_index);
+                    if (normal >= normalIndex.size()) {
+                        throw Error(objName + ": a face refers to a missing normal");
+                    }
+                    normals[k] = normalIndex[normal];
                 }
-                normals[k] = normalIndex[normal];
-            }
-            const glm::vec3& a = mesh.positions[tri[0]];
-            const glm::vec3& b = mesh.positions[tri[1]];
-            const glm::vec3& c = mesh.positions[tri[2]];
-            const glm::vec3 n = glm::cross(b - a, c - a);
-            if (!isFinite(a) || !isFinite(b) || !isFinite(c) || !isFinite(n) ||
-                !(glm::dot(n, n) > 0.0f)) {
-                ++dropped;
-                continue;
-            }
-            // A face without vn on every corner is flat, as is one on a normal without a direction.
-            const bool usable = std::none_of(normals.begin(), normals.end(),
-                                             [&](uint32_t i) { return i == kUnusable; });
-            flatForUnusableNormals += cornersHaveNormals && !usable;
-            const bool smooth = cornersHaveNormals && usable;
-            anySmooth = anySmooth || smooth;
-            mesh.triangleNormals.push_back(smooth ? normals : kNoNormals);
-            // A face without vt on every corner has no texture coordinates.
-            mesh.triangleUvs.push_back(cornersHaveUvs ? uvs : kNoUvs);
-            anyUvs = anyUvs || cornersHaveUvs;
+                const glm::vec3& a = mesh.positions[tri[0]];
+                const glm::vec3& b = mesh.positions[tri[1]];
+                const glm::vec3& c = mesh.positions[tri[2]];
+                const glm::vec3 n = glm::cross(b - a, c - a);
+                if (!isFinite(a) || !isFinite(b) || !isFinite(c) || !isFinite(n) ||
+                    !(glm::dot(n, n) > 0.0f)) {
+                    ++dropped;
+                    continue;
+                }
+                // A face without vn on every corner is flat, as is one on a normal without a direction.
+                const bool usable = std::none_of(normals.begin(), normals.end(),
+                                                 [&](uint32_t i) { return i == kUnusable; });
+                flatForUnusableNormals += cornersHaveNormals && !usable;
+                const bool smooth = cornersHaveNormals && usable;
+                anySmooth = anySmooth || smooth;
+                mesh.triangleNormals.push_back(smooth ? normals : kNoNormals);
+                // A face without vt on every corner has no texture coordinates.
+                mesh.triangleUvs.push_back(cornersHaveUvs ? uvs : kNoUvs);
+                anyUvs = anyUvs || cornersHaveUvs;
 
-            const int materialId = shape.mesh.material_ids[f];
-            uint32_t material = defaultMaterial;
-            if (materialId >= 0) {
-                material = static_cast<uint32_t>(materialId);
-            } else {
-                defaultUsed = true;
+                const int materialId = shape.mesh.material_ids[f];
+                uint32_t material = defaultMaterial;
+                if (materialId >= 0) {
+                    material = static_cast<uint32_t>(materialId);
+                } else {
+                    defaultUsed = true;
+                }
+                mesh.triangles.push_back(tri);
+                mesh.triangleMaterials.push_back(material);
             }
-            mesh.triangles.push_back(tri);
-            mesh.triangleMaterials.push_back(material);
         }
+    }
+    if (fannedFaces > 0) {
+        warnings.push_back(objName + ": " + std::to_string(fannedFaces) +
+                           (fannedFaces == 1 ? " concave face was split as a fan, over its notches"
+                                             : " concave faces were split as fans, over their notches") +
+                           ": the file's polygons took longer to triangulate than the loader allows");
     }
     if (defaultUsed) mesh.materials.push_back({"default", glm::vec3(kDefaultAlbedo), glm::vec3(0.0f)});
     // No triangle is smooth: the mesh says so by having no normals at all (mesh.h).

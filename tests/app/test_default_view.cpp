@@ -1,7 +1,8 @@
 // The first picture of models a user would expect to open, with no option at all: Debian's
 // assimp-testmodels (and Embree's Cornell box from embree-tools), rendered small by `strata render`.
-// Each must show its model (covering at least 10% of the frame by the EXR's alpha, the share of
-// camera rays that found a surface), lit (not black) and standing out from what is around it.
+// Each must show its model framed (spanning at least 40% of the frame's width and height by the
+// EXR's alpha, the share of camera rays that found a surface), lit (not black) and standing out
+// from what is around it.
 // Skipped, with a message, for the models that are not installed.
 #include <doctest/doctest.h>
 
@@ -42,7 +43,7 @@ const Model kModels[] = {
 };
 }  // namespace
 
-TEST_CASE("default view: each model a user would open shows up, lit, on at least 10% of the frame") {
+TEST_CASE("default view: each model a user would open shows up, lit, across at least 40% of the frame") {
     const auto dir = test::scratchDir("default-view");
     int rendered = 0;
     for (const Model& model : kModels) {
@@ -61,12 +62,29 @@ TEST_CASE("default view: each model a user would open shows up, lit, on at least
         const Image image = readExr(exr);
         REQUIRE(image.alpha.size() == image.pixels.size());
         std::vector<double> onModel;  // the luminance of the pixels that see the model
+        int left = image.width, right = -1, top = image.height, bottom = -1;
         for (size_t p = 0; p < image.pixels.size(); ++p) {
-            if (image.alpha[p] >= 0.5f) onModel.push_back(luminance(glm::dvec3(image.pixels[p])));
+            if (!(image.alpha[p] >= 0.5f)) continue;
+            onModel.push_back(luminance(glm::dvec3(image.pixels[p])));
+            const int x = static_cast<int>(p % static_cast<size_t>(image.width));
+            const int y = static_cast<int>(p / static_cast<size_t>(image.width));
+            left = std::min(left, x);
+            right = std::max(right, x);
+            top = std::min(top, y);
+            bottom = std::max(bottom, y);
         }
         const double share = static_cast<double>(onModel.size()) / static_cast<double>(image.pixels.size());
+        // The model's extent on screen, as a share of the frame's width and height.
+        const double across = static_cast<double>(right - left + 1) / image.width;
+        const double down = static_cast<double>(bottom - top + 1) / image.height;
         CAPTURE(share);
-        CHECK(share >= 0.10);  // not all sky: the model is in view, and large
+        CAPTURE(across);
+        CAPTURE(down);
+        // Not all sky, and framed: the model spans 40% of the frame both ways (a thin ring
+        // covers 5% of it and fills the view as a cube does) and covers more than a few pixels.
+        CHECK(across >= 0.4);
+        CHECK(down >= 0.4);
+        CHECK(share >= 0.02);
         if (onModel.empty()) continue;
         // Not black: most of the model is lit (a few glowing labels on black would not do).
         std::nth_element(onModel.begin(), onModel.begin() + onModel.size() / 2, onModel.end());

@@ -16,7 +16,7 @@ using namespace strata;
 
 namespace {
 // A smooth 64 x 64 RGB gradient, which JPEG codes closely.
-std::vector<unsigned char> gradient() {
+std::vector<unsigned char> gradientPixels() {
     std::vector<unsigned char> pixels;
     for (int y = 0; y < 64; ++y) {
         for (int x = 0; x < 64; ++x) {
@@ -28,7 +28,7 @@ std::vector<unsigned char> gradient() {
 }  // namespace
 
 TEST_CASE("jpeg: colour and grey decode at 8 bits, close to what was coded") {
-    const std::vector<unsigned char> source = gradient();
+    const std::vector<unsigned char> source = gradientPixels();
     std::vector<std::string> warnings;
     const Texture colour =
         decodeTexture(test::jpegFile(64, 64, 3, source), "g.jpg", TextureEncoding::Data, warnings);
@@ -66,7 +66,7 @@ TEST_CASE("jpeg: a truncated file decodes, grey where its data is missing, with 
         REQUIRE(scan != std::string::npos);
         return jpeg.substr(0, (scan + jpeg.size()) / 2);
     };
-    const std::string cut = cutInScan(test::jpegFile(64, 64, 3, gradient()));
+    const std::string cut = cutInScan(test::jpegFile(64, 64, 3, gradientPixels()));
     // Cut and closed with an end-of-image marker (which stb_image decoded without a word), and cut.
     for (const std::string& bytes : {cut + "\xff\xd9", cut}) {
         std::vector<std::string> warnings;
@@ -79,7 +79,7 @@ TEST_CASE("jpeg: a truncated file decodes, grey where its data is missing, with 
         CHECK(std::abs(missing.y * 255.0f - 128.0f) < 2.0f);
     }
     // A progressive file cut in its first scan (of DC coefficients, some tens of bytes) likewise.
-    const std::string progressive = test::jpegFile(64, 64, 3, gradient(), true);
+    const std::string progressive = test::jpegFile(64, 64, 3, gradientPixels(), true);
     std::vector<std::string> warnings;
     const std::string firstScan = progressive.substr(0, progressive.find("\xff\xda") + 30);
     decodeTexture(firstScan, "cut.jpg", TextureEncoding::Data, warnings);

@@ -1,10 +1,14 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 #include <set>
 #include <string>
 #include <vector>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "util/error.h"
 #include "scene/obj_loader.h"
@@ -238,6 +242,65 @@ TEST_CASE("obj: a split polygon keeps each corner's normal, a dropped triangle i
         CAPTURE(t);
         CHECK(mesh.triangleNormals[t] == mesh.triangles[t]);
     }
+}
+
+TEST_CASE("obj: a concave face is split inside its outline, its texture coordinates kept per corner") {
+    // A C of area 7 seen from +z, in a plane the file tilts; corner i has vt i. A fan from the
+    // first corner would cover the notch (area 9 in all) and hold triangles facing -z.
+    LoadReport report;
+    const MeshData mesh = parseObj(
+        "v 0 0 0\nv 3 0 0\nv 3 1 0\nv 1 1 0\nv 1 2 0\nv 3 2 0\nv 3 3 0\nv 0 3 0\n"
+        "vt 0 0\nvt 1 0\nvt 2 0\nvt 3 0\nvt 4 0\nvt 5 0\nvt 6 0\nvt 7 0\n"
+        "f 1/1 2/2 3/3 4/4 5/5 6/6 7/7 8/8\n",
+        "scene.obj", "", "m.mtl", &report);
+    REQUIRE(mesh.triangles.size() == 6);
+    CHECK(report.warnings.empty());
+    float area = 0.0f;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        CAPTURE(t);
+        const auto& [a, b, c] = mesh.triangles[t];
+        const glm::vec3 normal = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        CHECK(normal.z > 0.0f);
+        area += 0.5f * normal.z;
+        for (size_t k = 0; k < 3; ++k) CHECK(mesh.uvs[mesh.triangleUvs[t][k]].x == float(mesh.triangles[t][k]));
+    }
+    CHECK(area == doctest::Approx(7.0));
+}
+
+TEST_CASE("obj: a face of more than 255 corners keeps them all, between groups and materials") {
+    // A quad, then a star of 300 corners (concave at every other one), then a triangle, each in a
+    // group of its own and the star with another material: tinyobjloader counts a face's corners
+    // in a byte, which would lose 256 of the star's.
+    const int corners = 300;
+    std::string obj = "mtllib scene.mtl\nv 10 0 0\nv 11 0 0\nv 11 1 0\nv 10 1 0\n";
+    double starArea = 0.0;
+    for (int i = 0; i < corners; ++i) {
+        const double angle = 2.0 * std::numbers::pi * i / corners;
+        const double radius = i % 2 ? 0.5 : 1.0;
+        obj += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) + " 0\n";
+    }
+    obj += "v 20 0 0\nv 21 0 0\nv 20 1 0\ng quad\nusemtl white\nf 1 2 3 4\ng star\nusemtl lamp\nf";
+    for (int i = 0; i < corners; ++i) obj += " " + std::to_string(5 + i);
+    obj += "\ng last\nusemtl white\nf -3 -2 -1\n";
+    const MeshData mesh = parseObj(obj, "scene.obj", kMtl, "scene.mtl");
+    REQUIRE(mesh.triangles.size() == 2 + (corners - 2) + 1);
+    for (int i = 0; i < corners; ++i) {
+        const glm::dvec2 a(mesh.positions[4 + i]);
+        const glm::dvec2 b(mesh.positions[4 + (i + 1) % corners]);
+        starArea += 0.5 * (a.x * b.y - a.y * b.x);
+    }
+    double area = 0.0;
+    for (size_t t = 2; t < 2 + corners - 2; ++t) {
+        CAPTURE(t);
+        CHECK(mesh.materials[mesh.triangleMaterials[t]].name == "lamp");
+        const auto& [a, b, c] = mesh.triangles[t];
+        for (uint32_t v : mesh.triangles[t]) CHECK((v >= 4 && v < 4 + corners));
+        area += 0.5 * glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]).z;
+    }
+    CHECK(area == doctest::Approx(starArea).epsilon(1e-5));
+    CHECK(mesh.materials[mesh.triangleMaterials[0]].name == "white");
+    CHECK(mesh.materials[mesh.triangleMaterials.back()].name == "white");
+    CHECK(mesh.triangles.back() == std::array<uint32_t, 3>{4 + corners, 5 + corners, 6 + corners});
 }
 
 TEST_CASE("obj: a zero or non-finite vn shades its triangles flat, with one warning for the file") {
