@@ -30,7 +30,8 @@ std::vector<Point> projectCounterClockwise(std::span<const glm::vec3> corners) {
     }
     if (!std::isfinite(normal.x + normal.y + normal.z)) return {};
     const glm::dvec3 magnitude = glm::abs(normal);
-    const int axis = magnitude.x > magnitude.y ? (magnitude.x > magnitude.z ? 0 : 2) : (magnitude.y > magnitude.z ? 1 : 2);
+    const int axis = magnitude.x > magnitude.y ? (magnitude.x > magnitude.z ? 0 : 2)
+                                               : (magnitude.y > magnitude.z ? 1 : 2);
     if (!(magnitude[axis] > 0.0)) return {};
     // The other two axes in cyclic order (x: y, z; y: z, x; z: x, y) see a polygon that turns
     // counter-clockwise about +axis turn counter-clockwise.
@@ -141,8 +142,12 @@ bool triangulatePolygon(std::span<const glm::vec3> corners, TriangulationBudget&
                         std::vector<Triangle>& triangles) {
     const size_t n = corners.size();
     if (n < 3) return true;
+    if (n == 3) {
+        triangles.push_back({0, 1, 2});
+        return true;
+    }
     std::vector<Point> points = projectCounterClockwise(corners);
-    if (n == 3 || points.empty() || isConvex(points)) {
+    if (points.empty() || isConvex(points)) {
         if (n == 4) {
             // tinyobjloader's choice, in its arithmetic, so that quads split as they always were.
             const glm::vec3 e02 = corners[2] - corners[0];

@@ -26,9 +26,9 @@ inline constexpr uint64_t kTriangulationVisits = uint64_t(1) << 27;
 // Appends the polygon's n - 2 triangles to `triangles`, as indices into `corners` and turning
 // the way the corners do (so the face's front stays its front). The polygon may lie in any plane
 // and need not be exactly planar; it is split in its projection along the largest component of
-// its Newell normal. A convex quad is split along its shorter diagonal, as tinyobjloader and
-// Blender do; any other convex polygon as a fan from corner 0. A polygon with no area or a
-// non-finite corner gets a fan (its triangles are degenerate, and the loader drops them); one
+// its Newell normal. A convex quad is split along its shorter diagonal, as tinyobjloader does;
+// any other convex polygon as a fan from corner 0. A polygon with no area or a non-finite corner
+// gets a fan too (the loader drops its triangles without area or with a non-finite corner); one
 // that crosses itself gets triangles that cover it, not a tiling. Returns false when the budget
 // ran out before the polygon was clipped, its remaining corners then split as a fan.
 bool triangulatePolygon(std::span<const glm::vec3> corners, TriangulationBudget& budget,

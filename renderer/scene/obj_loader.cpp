@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <optional>
@@ -18,8 +18,8 @@
 
 #include "util/components.h"
 #include "util/error.h"
-#include "materials/microfacet.h"
 #include "geometry/polygon_triangulation.h"
+#include "materials/microfacet.h"
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
 #include "scene/scene_textures.h"
@@ -280,7 +280,9 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
         } else if (key == "f") {
             if (words.size() < 4) failAt(name, line, "a face needs at least 3 vertices");
             scan.triangles += words.size() - 3;
-            if (words.size() - 1 > UINT8_MAX) scan.wideFaces.emplace_back(scan.faces, static_cast<uint32_t>(words.size() - 1));
+            if (words.size() - 1 > UINT8_MAX) {
+                scan.wideFaces.emplace_back(scan.faces, static_cast<uint32_t>(words.size() - 1));
+            }
             ++scan.faces;
             for (size_t i = 1; i < words.size(); ++i) {
                 const auto corner = faceCorner(words[i]);

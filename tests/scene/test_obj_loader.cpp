@@ -259,7 +259,8 @@ TEST_CASE("obj: a concave face is split inside its outline, its texture coordina
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         CAPTURE(t);
         const auto& [a, b, c] = mesh.triangles[t];
-        const glm::vec3 normal = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        const glm::vec3 normal =
+            glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
         CHECK(normal.z > 0.0f);
         area += 0.5f * normal.z;
         for (size_t k = 0; k < 3; ++k) CHECK(mesh.uvs[mesh.triangleUvs[t][k]].x == float(mesh.triangles[t][k]));
@@ -277,7 +278,8 @@ TEST_CASE("obj: a face of more than 255 corners keeps them all, between groups a
     for (int i = 0; i < corners; ++i) {
         const double angle = 2.0 * std::numbers::pi * i / corners;
         const double radius = i % 2 ? 0.5 : 1.0;
-        obj += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) + " 0\n";
+        obj += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) +
+               " 0\n";
     }
     obj += "v 20 0 0\nv 21 0 0\nv 20 1 0\ng quad\nusemtl white\nf 1 2 3 4\ng star\nusemtl lamp\nf";
     for (int i = 0; i < corners; ++i) obj += " " + std::to_string(5 + i);
