@@ -118,6 +118,15 @@ TEST_CASE("polygon triangulation: an L, a C and a slit ring tile their polygon")
         ring.emplace_back(0.9 * std::cos(a), 0.9 * std::sin(a), 0.0f);
     }
     checkTiles(ring, triangulate(ring));
+    // A square with a square hole, the hole joined to the outline by a slit of no width whose two
+    // sides repeat its end corners (as exporters write a face with a hole).
+    const std::vector<glm::vec3> holed{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0, 0},
+                                       {1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}, {1, 1, 0}};
+    const Triangles pieces = triangulate(holed);
+    checkTiles(holed, pieces);
+    double area = 0.0;
+    for (const auto& t : pieces) area += glm::length(vectorArea({holed[t[0]], holed[t[1]], holed[t[2]]}));
+    CHECK(area == doctest::Approx(12.0));
 }
 
 TEST_CASE("polygon triangulation: random star polygons tile in any plane, either winding, far from the origin") {
