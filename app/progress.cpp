@@ -1,6 +1,7 @@
 #include "progress.h"
 
 #include <cstdio>
+#include <string>
 #include <unistd.h>
 
 namespace strata {
@@ -42,27 +43,34 @@ void ProgressReporter::print(uint64_t done, uint64_t paths, bool final) {
     const double elapsed = elapsedSeconds();
     const double fraction = total_ ? static_cast<double>(done) / total_ : 1.0;
     const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-    const auto count = static_cast<unsigned long long>(done);
-    const auto total = static_cast<unsigned long long>(total_);
+    // The same fields either way: set apart by two spaces after a redrawn bar, by commas in a log.
+    const char* separator = terminal_ ? "  " : ", ";
+    char field[96];
+    std::snprintf(field, sizeof field, "%s %llu/%llu", step_.c_str(), static_cast<unsigned long long>(done),
+                  static_cast<unsigned long long>(total_));
+    std::string line = field;
+    const auto add = [&] { (line += separator) += field; };
     // A pass's figures: its spp so far and the paths per second.
-    const unsigned long long spp = done * static_cast<uint64_t>(pathsPerPass_);
-    const double rate = elapsed > 0.0 ? static_cast<double>(paths) / elapsed * 1e-6 : 0.0;
+    if (pathsPerPass_ > 0) {
+        std::snprintf(field, sizeof field, "%llu spp", static_cast<unsigned long long>(done * pathsPerPass_));
+        add();
+    }
+    std::snprintf(field, sizeof field, terminal_ ? "%.1fs" : "%.1fs elapsed", elapsed);
+    add();
+    std::snprintf(field, sizeof field, "ETA %.1fs", eta);
+    add();
+    if (pathsPerPass_ > 0) {
+        const double rate = elapsed > 0.0 ? static_cast<double>(paths) / elapsed * 1e-6 : 0.0;
+        std::snprintf(field, sizeof field, "%.2f Msamples/s", rate);
+        add();
+    }
     if (terminal_) {
         constexpr int kWidth = 30;
-        const int filled = static_cast<int>(fraction * kWidth);
-        std::string bar(filled, '#');
+        std::string bar(static_cast<size_t>(fraction * kWidth), '#');
         bar.resize(kWidth, '.');
-        std::fprintf(stderr, "\r%s [%s] %s %llu/%llu", label_.c_str(), bar.c_str(), step_.c_str(), count, total);
-        if (pathsPerPass_ > 0) std::fprintf(stderr, "  %llu spp", spp);
-        std::fprintf(stderr, "  %.1fs  ETA %.1fs", elapsed, eta);
-        if (pathsPerPass_ > 0) std::fprintf(stderr, "  %.2f Msamples/s", rate);
-        std::fputs(final ? "\n" : "  ", stderr);
+        std::fprintf(stderr, "\r%s [%s] %s%s", label_.c_str(), bar.c_str(), line.c_str(), final ? "\n" : "  ");
     } else {
-        std::fprintf(stderr, "%s: %s %llu/%llu", label_.c_str(), step_.c_str(), count, total);
-        if (pathsPerPass_ > 0) std::fprintf(stderr, ", %llu spp", spp);
-        std::fprintf(stderr, ", %.1fs elapsed, ETA %.1fs", elapsed, eta);
-        if (pathsPerPass_ > 0) std::fprintf(stderr, ", %.2f Msamples/s", rate);
-        std::fputc('\n', stderr);
+        std::fprintf(stderr, "%s: %s\n", label_.c_str(), line.c_str());
     }
     std::fflush(stderr);
 }

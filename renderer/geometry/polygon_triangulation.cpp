@@ -1,8 +1,8 @@
 #include "geometry/polygon_triangulation.h"
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
