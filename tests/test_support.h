@@ -34,6 +34,9 @@ inline constexpr bool kSanitizedBuild = true;
 inline constexpr bool kSanitizedBuild = false;
 #endif
 
+// A correct estimator fails a 4.5-sigma check with probability 7e-6.
+inline constexpr double kSigmas = 4.5;
+
 std::filesystem::path sourceDir();
 // The bundled Cornell box, assets/cornell/cornell.obj.
 std::filesystem::path cornellScene();

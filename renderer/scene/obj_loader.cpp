@@ -19,6 +19,7 @@
 #include "util/components.h"
 #include "util/error.h"
 #include "geometry/polygon_triangulation.h"
+#include "geometry/smoothing_groups.h"
 #include "materials/microfacet.h"
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
@@ -406,14 +407,28 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
     });
 }
 
+// The number 1, 2, ... of the smoothing group that `s WORD` names, or 0 for none; `groups` holds
+// the numbers given so far. Numbers are told apart by value: "s 01" is "s 1".
+size_t smoothingGroupNumber(std::string_view word, std::map<std::string, size_t>& groups) {
+    unsigned long long value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    const bool number = error == std::errc() && end == word.data() + word.size();
+    if (word == "off" || (number && value == 0)) return 0;
+    const std::string key = number ? std::to_string(value) : "word " + std::string(word);
+    return groups.try_emplace(key, groups.size() + 1).first->second;
+}
+
 // The OBJ as tinyobjloader is to read it: only the statements the checks read, as they read them.
 // Comments go, since tinyobjloader reads '#' as a comment only at the start of a line ("f 1 2 3
 // # 5" would read a face the checks never saw, a fuzzer finding: an index past the last vertex
 // read out of bounds). One mtllib comes first, so that every material is known to every usemtl,
 // and each usemtl names its material by token (its first definition), or none when no MTL
-// defines it: those faces get the default material and a warning, once per name.
+// defines it: those faces get the default material and a warning, once per name. Smoothing
+// groups are renumbered 1, 2, ... in order of appearance ("off" and 0 are none): a group named by
+// a word, or by a number tinyobjloader's int would overflow, is a group all the same.
 std::string objForTinyobj(const std::string& text, const std::string& name,
                           const std::vector<MtlMaterial>& materials, std::vector<std::string>& warnings) {
+    std::map<std::string, size_t> smoothingGroups;
     std::map<std::string, size_t> byName;
     for (size_t i = 0; i < materials.size(); ++i) byName.emplace(materials[i].name, i);
     std::set<std::string> undefined;
@@ -437,6 +452,8 @@ std::string objForTinyobj(const std::string& text, const std::string& name,
                                "; " + kDefaultMaterialNote);
         } else if (key == "v" || key == "vn" || key == "vt" || key == "f") {
             appendLine(kept, words);
+        } else if (key == "s" && words.size() > 1) {
+            kept += "s " + std::to_string(smoothingGroupNumber(words[1], smoothingGroups)) + "\n";
         }
     });
     return kept;
@@ -604,6 +621,10 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     }
     bool anySmooth = false;
     size_t flatForUnusableNormals = 0;
+    // Triangles of faces in a smoothing group but without vn, by index into mesh.triangles: their
+    // normals come from their group's faces once all are read.
+    std::vector<SmoothTriangle> groupTriangles;
+    std::vector<size_t> groupTriangleIndex;
 
     size_t dropped = 0;
     TriangulationBudget triangulation{kTriangulationVisits};
@@ -659,12 +680,18 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
                     ++dropped;
                     continue;
                 }
-                // A face without vn on every corner is flat, as is one on a normal without a direction.
+                // A face without vn on every corner is flat unless in a smoothing group (its normals
+                // then come from the group), as is one on a normal without a direction.
                 const bool usable = std::none_of(normals.begin(), normals.end(),
                                                  [&](uint32_t i) { return i == kUnusable; });
                 flatForUnusableNormals += cornersHaveNormals && !usable;
                 const bool smooth = cornersHaveNormals && usable;
                 anySmooth = anySmooth || smooth;
+                const uint32_t group = shape.mesh.smoothing_group_ids[f];
+                if (!cornersHaveNormals && group != 0) {
+                    groupTriangles.push_back({tri, group});
+                    groupTriangleIndex.push_back(mesh.triangles.size());
+                }
                 mesh.triangleNormals.push_back(smooth ? normals : kNoNormals);
                 // A face without vt on every corner has no texture coordinates.
                 mesh.triangleUvs.push_back(cornersHaveUvs ? uvs : kNoUvs);
@@ -689,6 +716,16 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
                            ": the file's polygons took longer to triangulate than the loader allows");
     }
     if (defaultUsed) mesh.materials.push_back({"default", glm::vec3(kDefaultAlbedo), glm::vec3(0.0f)});
+    if (!groupTriangles.empty()) {
+        const GroupNormals group = smoothingGroupNormals(mesh.positions, groupTriangles);
+        const auto first = static_cast<uint32_t>(mesh.normals.size());
+        mesh.normals.insert(mesh.normals.end(), group.normals.begin(), group.normals.end());
+        for (size_t t = 0; t < groupTriangles.size(); ++t) {
+            if (group.corners[t] == kNoNormals) continue;
+            for (size_t k = 0; k < 3; ++k) mesh.triangleNormals[groupTriangleIndex[t]][k] = first + group.corners[t][k];
+            anySmooth = true;
+        }
+    }
     // No triangle is smooth: the mesh says so by having no normals at all (mesh.h).
     refuseWithoutFaces(scan, objName);
     if (!anySmooth) {

@@ -21,8 +21,7 @@ using namespace strata;
 
 namespace {
 
-// A correct estimator fails a 4.5-sigma check with probability 7e-6.
-constexpr double kSigmas = 4.5;
+using test::kSigmas;
 
 Material lambertian(float albedo, float emission = 0.0f) {
     Material m;

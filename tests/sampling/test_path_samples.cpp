@@ -17,8 +17,7 @@ using namespace strata;
 
 namespace {
 
-// A correct sampler fails a 4.5-sigma check with probability 7e-6.
-constexpr double kSigmas = 4.5;
+using test::kSigmas;
 
 struct Value {
     std::string name;

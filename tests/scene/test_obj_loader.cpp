@@ -228,6 +228,41 @@ TEST_CASE("obj: faces without vn leave the mesh without normals") {
     CHECK(mesh.triangleNormals.empty());
 }
 
+TEST_CASE("obj: faces in a smoothing group without vn share normals within the group, edges between groups kept") {
+    // A roof of two slopes meeting at the ridge x = 0 (normals (-1, 0, 1) and (1, 0, 1)), a
+    // quad each, then a gable face and a face given its own vn.
+    const MeshData mesh = parseObj("v -1 0 0\nv 0 0 1\nv 0 1 1\nv -1 1 0\nv 1 0 0\nv 1 1 0\nvn 0 1 0\n"
+                                   "s 1\nf 1 2 3 4\nf 2 5 6 3\n"
+                                   "s off\nf 1 5 2\n"
+                                   "s 2\nf 4 3//1 6\n",
+                                   "scene.obj", "", "m.mtl");
+    REQUIRE(mesh.triangles.size() == 6);
+    REQUIRE(mesh.triangleNormals.size() == 6);
+    const auto normalAt = [&](size_t t, uint32_t vertex) {
+        for (size_t k = 0; k < 3; ++k) {
+            if (mesh.triangles[t][k] == vertex) return mesh.normals.at(mesh.triangleNormals[t][k]);
+        }
+        FAIL("vertex not in triangle");
+        return glm::vec3(0.0f);
+    };
+    // The slopes in group 1: each ridge corner's normal is +z, each eave corner its slope's.
+    for (size_t t = 0; t < 4; ++t) {
+        CAPTURE(t);
+        REQUIRE(mesh.triangleNormals[t] != kNoNormals);
+        for (uint32_t v : mesh.triangles[t]) {
+            const glm::vec3 n = normalAt(t, v);
+            const glm::vec3 expected = mesh.positions[v].z == 1.0f ? glm::vec3(0, 0, 1)
+                                                                    : glm::normalize(glm::vec3(mesh.positions[v].x, 0, 1));
+            CHECK(glm::dot(n, expected) == doctest::Approx(1.0f));
+        }
+    }
+    // `s off`: flat. A face with vn on some corners only takes its group's normals on all of
+    // them: here, alone in group 2, its own (+y), not the file's vn.
+    CHECK(mesh.triangleNormals[4] == kNoNormals);
+    REQUIRE(mesh.triangleNormals[5] != kNoNormals);
+    for (uint32_t v : mesh.triangles[5]) CHECK(normalAt(5, v) == glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
 TEST_CASE("obj: a split polygon keeps each corner's normal, a dropped triangle its normals too") {
     // Vertex i has normal i on every corner, so each kept triangle's normals equal its vertices.
     const MeshData mesh = parseObj(
