@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "bundled_assets.h"
+#include "usage.h"
 #include "util/error.h"
 #include "integrator/truncation.h"
 #include "io/image_io.h"
@@ -27,7 +28,7 @@ void RenderOptions::addTo(CLI::App& command) {
                        "Choose K as the smallest depth whose truncation bound Le_max a^(K+1)/(1-a) <= E");
     command.add_option("--sampler", sampler, "Hemisphere sampler: " + samplerNames())
         ->capture_default_str();
-    command.add_option("--seed", seed, "Random seed")->capture_default_str();
+    acceptUnsigned64(*command.add_option("--seed", seed, "Random seed")->capture_default_str());
     command.add_option("--threads", threads, "Render threads (0: all cores)")->capture_default_str();
     command.add_option("--roulette-depth", rouletteDepth,
                        "Russian roulette from this bounce on, survival by path weight (-1: off)")
@@ -77,10 +78,11 @@ void RenderOptions::addTo(CLI::App& command) {
                 return gib > 0.0 && gib <= 16777216.0 ? std::string() : "must be a positive number of GiB";
             },
             "GIB"));
-    command.add_option("--max-triangles", maxTriangles,
-                       "Refuse a scene that stores more triangles than this after instancing (a shared "
-                       "mesh's once, each instance counted as 3), before reading its geometry")
-        ->capture_default_str();
+    acceptUnsigned64(*command
+                          .add_option("--max-triangles", maxTriangles,
+                                      "Refuse a scene that stores more triangles than this after instancing (a "
+                                      "shared mesh's once, each instance counted as 3), before reading its geometry")
+                          ->capture_default_str());
 }
 
 std::vector<std::string> RenderOptions::arguments() const {

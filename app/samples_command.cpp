@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "sampling/direction_sampler.h"
+#include "usage.h"
 #include "util/error.h"
 #include "integrator/progressive_renderer.h"
 
@@ -45,7 +46,7 @@ void addSamplesCommand(CLI::App& app) {
         "samples", "Print a pixel's sampled directions as CSV");
     sub->add_option("--sampler", command->sampler, "Sampler: " + samplerNames())->capture_default_str();
     sub->add_option("--passes", command->passes, "Passes of 24 paths")->capture_default_str();
-    sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
+    acceptUnsigned64(*sub->add_option("--seed", command->seed, "Random seed")->capture_default_str());
     sub->add_option("--depth", command->depth, "Bounces per path to list")->capture_default_str();
     sub->add_option("--pixel", command->pixel, "Pixel index (y * width + x)")->capture_default_str();
     sub->callback([command] { command->run(); });

@@ -3,6 +3,8 @@
 #include <CLI/App.hpp>
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 
 #include "io/output_file.h"
 #include "util/error.h"
@@ -86,6 +88,18 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
         message += "; did you mean '" + *nearest + "'?";
     }
     return message + " " + help;
+}
+
+void acceptUnsigned64(CLI::Option& option) {
+    option.check(CLI::Validator(
+        [](const std::string& text) {
+            uint64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, value);
+            const bool whole = !text.empty() && error == std::errc() && stop == end;
+            return whole ? std::string() : "must be a whole number from 0 to 18446744073709551615";
+        },
+        ""));
 }
 
 ImageFormat checkOutputOption(const std::string& option, const std::filesystem::path& path,

@@ -11,6 +11,7 @@
 #include "io/image_io.h"
 
 namespace CLI {
+class Option;
 class ParseError;
 }
 
@@ -38,6 +39,10 @@ std::optional<std::string> nearestName(const std::string& typed, const std::vect
 // "unknown option '--sp'; did you mean '--spp'? (see strata render --help)"; for an argument no
 // positional takes, "unexpected argument 'b.obj' (see ...)"; for anything else CLI11's message.
 std::string describeParseError(const CLI::App& app, const CLI::ParseError& error);
+
+// Makes `option` (of an unsigned 64-bit integer: a seed, a count) take only a whole number from 0
+// to 2^64 - 1, written in decimal digits: CLI11 alone would read "-1" as 2^64 - 1 and 2^64 as 0.
+void acceptUnsigned64(CLI::Option& option);
 
 // Checks the value of an output option (`option`: "--out", "--screenshot") before any work: its
 // image format by extension, in any letter case (else strata::UsageError "OPTION: PATH: unknown

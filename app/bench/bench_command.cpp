@@ -19,6 +19,7 @@
 #include "bench/bench_throughput.h"
 #include "bench/bench_viewer.h"
 #include "bundled_assets.h"
+#include "usage.h"
 #include "sampling/direction_sampler.h"
 #include "util/error.h"
 #include "integrator/progressive_renderer.h"
@@ -374,7 +375,7 @@ void addBenchCommand(CLI::App& app) {
                     "embree (--vs-embree), cycles (--vs-cycles), viewer, real-scenes or ranks");
     sub->add_flag("--allow-outside-files", command->allowOutsideFiles,
                   "Read the files the scenes refer to also outside their folders (your own scenes only)");
-    sub->add_option("--seed", command->seed, "Random seed")->capture_default_str();
+    acceptUnsigned64(*sub->add_option("--seed", command->seed, "Random seed")->capture_default_str());
     sub->add_option("--threads", command->threads, "Render threads (0: all cores)")->capture_default_str();
     sub->callback([command, depth] {
         command->depthsGiven = depth->count() > 0;
