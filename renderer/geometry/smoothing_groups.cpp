@@ -20,10 +20,31 @@ constexpr uint32_t kNone = UINT32_MAX;
 GroupNormals smoothingGroupNormals(std::span<const glm::vec3> positions, std::span<const SmoothTriangle> triangles) {
     GroupNormals result;
     result.corners.reserve(triangles.size());
+    // A sum per (vertex, group). Most files smooth in one group, so a vertex's first group is
+    // found by index, and only a vertex in further groups goes through the hash map.
     // In double: a vertex shared by thousands of thin faces sums them without losing the small ones.
     std::vector<glm::dvec3> sums;
     std::vector<double> angles;  // the weights each sum adds up
-    std::unordered_map<uint64_t, uint32_t> slotOf;  // (vertex, group) -> index into sums
+    std::vector<uint32_t> slotGroup;
+    std::vector<uint32_t> firstSlot(positions.size(), kNone);
+    std::unordered_map<uint64_t, uint32_t> furtherSlots;
+    const auto slotFor = [&](uint32_t vertex, uint32_t group) {
+        uint32_t& first = firstSlot[vertex];
+        if (first != kNone && slotGroup[first] == group) return first;
+        const auto newSlot = static_cast<uint32_t>(sums.size());
+        uint32_t slot = newSlot;
+        if (first == kNone) {
+            first = newSlot;
+        } else {
+            slot = furtherSlots.try_emplace(uint64_t(vertex) << 32 | group, newSlot).first->second;
+        }
+        if (slot == newSlot) {
+            sums.emplace_back(0.0);
+            angles.push_back(0.0);
+            slotGroup.push_back(group);
+        }
+        return slot;
+    };
     for (const SmoothTriangle& triangle : triangles) {
         std::array<glm::dvec3, 3> p;
         for (size_t k = 0; k < 3; ++k) p[k] = glm::dvec3(positions[triangle.vertices[k]]);
@@ -37,13 +58,7 @@ GroupNormals smoothingGroupNormals(std::span<const glm::vec3> positions, std::sp
         }
         const glm::dvec3 normal = cross / area;
         for (size_t k = 0; k < 3; ++k) {
-            const uint64_t key = uint64_t(triangle.vertices[k]) << 32 | triangle.group;
-            const auto [slot, added] = slotOf.try_emplace(key, static_cast<uint32_t>(sums.size()));
-            if (added) {
-                sums.emplace_back(0.0);
-                angles.push_back(0.0);
-            }
-            slots[k] = slot->second;
+            slots[k] = slotFor(triangle.vertices[k], triangle.group);
             const glm::dvec3& corner = p[k];
             const double angle = angleBetween(p[(k + 1) % 3] - corner, p[(k + 2) % 3] - corner);
             sums[slots[k]] += normal * angle;
