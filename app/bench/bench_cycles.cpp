@@ -37,11 +37,13 @@ namespace fs = std::filesystem;
 constexpr int kReferenceSppFactor = 16;
 
 // Why Cycles cannot be given the scene as Strata renders it, or empty. The script builds diffuse
-// materials, textured or not (a model without materials keeps Cycles' default surface, Lambertian
-// 0.8 like Strata's), or a GGX lobe without Fresnel, with one-sided emission; keeps the model's
-// vertex normals; and lights the scene by its emitters, a uniform sky or a map, nothing else.
+// materials, textured or not, without vertex colours (a model without materials keeps Cycles'
+// default surface, Lambertian 0.8 like Strata's), or a GGX lobe without Fresnel, with one-sided
+// emission; keeps the model's vertex normals; and lights the scene by its emitters, a uniform sky
+// or a map, nothing else.
 std::string unsupported(const MeshData& mesh, bool lit) {
     if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return "it has point or directional lights";
+    if (!mesh.colours.empty()) return "it has vertex colours";
     bool emits = false;
     for (const Material& m : mesh.materials) {
         if (m.transmission > 0.0f || m.clearcoat > 0.0f) return "material " + m.name + " transmits or is coated";

@@ -243,7 +243,7 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // The strata, the BSDF's cosines and wo live in the shading frame.
     const Frame frame = Frame::fromNormal(surface.shadingNormal);
     const glm::vec3 wo = frame.toLocal(-ray.direction);
-    const Bsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv, viewer.front);
+    const Bsdf bsdf = scene_.materials().bsdf(triangle.material, surface.uv, viewer.front, surface.colour);
     // Lights are sampled from, and their densities for MIS measured from, the origin that a
     // reflected ray leaves from rather than the hit point: far from the origin of the coordinates
     // the two are apart by a margin the scene's size does not bound, and the light sample and the

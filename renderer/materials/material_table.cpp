@@ -64,10 +64,9 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
                                      m.clearcoat,
                                      m.clearcoat > 0.0f && m.clearcoatRoughness > 0.0f ? lobeFor(m.clearcoatRoughness)
                                                                                        : nullptr};
-        int32_t textured = -1;
-        if (m.hasReflectanceTextures() && !black) {
-            textured = static_cast<int32_t>(textured_.size());
-            textured_.push_back(m);
+        const bool textured = m.hasReflectanceTextures() && !black;
+        materials_.push_back(m);
+        if (textured) {
             if ((m.textures.roughnessMetallic || m.textures.clearcoatRoughness) && !quantisedLobes_[0]) {
                 for (int level = 0; level < kRoughnessLevels; ++level) {
                     quantisedLobes_[static_cast<size_t>(level)] =
@@ -79,7 +78,7 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
         const Bsdf back = build(constants, false);
         // A texture can give a diffuse base where the constants have none (a metallic texture
         // under a metallic factor of 1), so a textured material is taken to read them.
-        const bool readsDiffuseNumbers = textured >= 0 || front.readsDiffuseNumbers() || back.readsDiffuseNumbers();
+        const bool readsDiffuseNumbers = textured || front.readsDiffuseNumbers() || back.readsDiffuseNumbers();
         entries_.push_back({front, back, constants, absorptionOf(m), black, readsDiffuseNumbers, textured});
     }
 }
@@ -112,13 +111,15 @@ Bsdf MaterialTable::build(const SurfacePoint& p, bool front) {
     return layered;
 }
 
-Bsdf MaterialTable::texturedBsdf(const Entry& entry, glm::vec2 uv, bool front) const {
-    const Material& m = textured_[static_cast<size_t>(entry.textured)];
+Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, const glm::vec3& vertexColour) const {
+    const Entry& entry = entries_[material];
+    const Material& m = materials_[material];
     const auto channel = [&](const std::shared_ptr<const Texture>& texture, int c) {
         return texture ? unitClamped(texture->lookup(uv)[c]) : 1.0f;
     };
     SurfacePoint p = entry.constants;
-    const glm::vec3 colour = m.textures.colour ? unitClamped(glm::vec3(m.textures.colour->lookup(uv))) : glm::vec3(1.0f);
+    glm::vec3 colour = unitClamped(vertexColour);
+    if (m.textures.colour) colour *= unitClamped(glm::vec3(m.textures.colour->lookup(uv)));
     float metallic = 1.0f;
     if (m.textures.roughnessMetallic) {
         const glm::vec4 texel = m.textures.roughnessMetallic->lookup(uv);

@@ -14,10 +14,11 @@
 // roughness and kept for the scene's lifetime, so a new integrator on the same scene (the viewer
 // restarts one on every camera move) rebuilds nothing.
 //
-// A material with a texture that changes its BSDF gets the BSDF built at each hit from the texels
-// at the hit's UV. Its roughness then varies over the surface, but albedo tables cannot be built
-// per hit: a roughness texture's values are quantised to kRoughnessLevels evenly spaced roughnesses
-// 0, 1/16, ..., 1, whose lobes are built once. The roughness used is off by at most 1/32 (GGX
+// A material with a texture that changes its BSDF, or a hit with a vertex colour, gets the BSDF
+// built at each hit from the texels at the hit's UV and the colour. A textured roughness then
+// varies over the surface, but albedo tables cannot be built per hit: a roughness texture's values
+// are quantised to kRoughnessLevels evenly spaced roughnesses 0, 1/16, ..., 1, whose lobes are
+// built once. The roughness used is off by at most 1/32 (GGX
 // alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255 bound from
 // below; the BSDF at each quantised roughness is itself exact and energy-conserving.
 #include <array>
@@ -39,14 +40,16 @@ public:
 
     explicit MaterialTable(const std::vector<Material>& materials);
 
-    // The BSDF of `material` at a hit with texture coordinates `uv`, seen from the surface's front
-    // (counter-clockwise) side or from behind it. A dielectric's front is its outside: its index
-    // of refraction there is the inside's over the outside's, and from behind its inverse. A
-    // material whose parameters are constant over its surface keeps its BSDFs made once, and a
-    // hit takes a copy: a few dozen bytes.
-    Bsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f), bool front = true) const {
+    // The BSDF of `material` at a hit with texture coordinates `uv` and vertex colour `colour`
+    // (which multiplies the diffuse or base colour, as a colour texture does), seen from the
+    // surface's front (counter-clockwise) side or from behind it. A dielectric's front is its
+    // outside: its index of refraction there is the inside's over the outside's, and from behind
+    // its inverse. A material whose parameters are constant over its surface keeps its BSDFs made
+    // once, and a hit without a vertex colour takes a copy: a few dozen bytes.
+    Bsdf bsdf(uint32_t material, glm::vec2 uv = glm::vec2(0.0f), bool front = true,
+              const glm::vec3& colour = glm::vec3(1.0f)) const {
         const Entry& entry = entries_[material];
-        if (entry.textured >= 0) return texturedBsdf(entry, uv, front);
+        if (entry.textured || colour != glm::vec3(1.0f)) return variedBsdf(material, uv, front, colour);
         return front ? entry.front : entry.back;
     }
     // Whether the material scatters nothing, so a path that reaches it ends there (textures
@@ -83,17 +86,18 @@ private:
         glm::vec3 absorption;
         bool black;
         bool readsDiffuseNumbers;
-        int32_t textured;  // index in textured_, -1 for a material without BSDF textures
+        bool textured;  // a texture changes the BSDF from hit to hit
     };
     const SpecularLobe* lobeFor(float roughness);
     // The lobe of a texture-modulated roughness, quantised as above (null at roughness 0 when
     // `smoothIsNull`: the coat's smooth limit is a delta, with no lobe).
     const SpecularLobe* quantisedLobe(float roughness, bool smoothIsNull) const;
     static Bsdf build(const SurfacePoint& p, bool front);
-    Bsdf texturedBsdf(const Entry& entry, glm::vec2 uv, bool front) const;
+    // The BSDF at a hit of a material that a texture or a vertex colour varies.
+    Bsdf variedBsdf(uint32_t material, glm::vec2 uv, bool front, const glm::vec3& colour) const;
 
     std::vector<Entry> entries_;
-    std::vector<Material> textured_;
+    std::vector<Material> materials_;
     std::vector<std::unique_ptr<SpecularLobe>> lobes_;
     std::array<const SpecularLobe*, kRoughnessLevels> quantisedLobes_{};
 };

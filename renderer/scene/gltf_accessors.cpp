@@ -8,11 +8,22 @@
 namespace strata {
 namespace {
 
-size_t componentsOf(AccessorUse use) {
+// The element types glTF allows for each use, as tinygltf's TINYGLTF_TYPE_ values.
+std::vector<int> typesOf(AccessorUse use) {
     switch (use) {
-        case AccessorUse::Index: return 1;
-        case AccessorUse::TexCoord: return 2;
-        default: return 3;
+        case AccessorUse::Index: return {TINYGLTF_TYPE_SCALAR};
+        case AccessorUse::TexCoord: return {TINYGLTF_TYPE_VEC2};
+        case AccessorUse::Colour: return {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+        default: return {TINYGLTF_TYPE_VEC3};
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        default: return "VEC4";
     }
 }
 
@@ -21,6 +32,7 @@ const char* nameOf(AccessorUse use) {
         case AccessorUse::Position: return "POSITION";
         case AccessorUse::Normal: return "NORMAL";
         case AccessorUse::TexCoord: return "TEXCOORD_0";
+        case AccessorUse::Colour: return "COLOR_0";
         case AccessorUse::Index: return "indices";
     }
     return "";
@@ -38,6 +50,7 @@ bool allowed(AccessorUse use, int componentType, bool normalized) {
                        : normalized && (componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
                                         componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
         case AccessorUse::TexCoord:
+        case AccessorUse::Colour:
             return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
                        ? !normalized
                        : normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -90,11 +103,13 @@ double componentValue(const unsigned char* bytes, int componentType, bool normal
 std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where) {
     const tinygltf::Accessor& accessor = gltf.element(gltf.model.accessors, index, where + ": accessor");
     const std::string what = where + ": " + nameOf(use) + " accessor " + std::to_string(index);
-    const size_t components = componentsOf(use);
-    const int wantedType = components == 1 ? TINYGLTF_TYPE_SCALAR : components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
-    if (accessor.type != wantedType) {
-        gltf.fail(what + " is not a " + (components == 1 ? "SCALAR" : components == 2 ? "VEC2" : "VEC3"));
+    const std::vector<int> types = typesOf(use);
+    if (std::find(types.begin(), types.end(), accessor.type) == types.end()) {
+        std::string wanted = typeName(types[0]);
+        for (size_t t = 1; t < types.size(); ++t) wanted += std::string(" or ") + typeName(types[t]);
+        gltf.fail(what + " is not a " + wanted);
     }
+    const size_t components = accessor.type == TINYGLTF_TYPE_SCALAR ? 1 : static_cast<size_t>(accessor.type);
     if (!allowed(use, accessor.componentType, accessor.normalized)) {
         gltf.fail(what + " has component type " + std::to_string(accessor.componentType) +
              (accessor.normalized ? " (normalized)" : "") + ", which glTF does not allow for it");

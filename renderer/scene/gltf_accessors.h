@@ -10,11 +10,13 @@
 
 namespace strata {
 
-// What an accessor holds for Strata: POSITION and NORMAL are VEC3, TEXCOORD_0 VEC2, indices SCALAR.
-enum class AccessorUse { Position, Normal, TexCoord, Index };
+// What an accessor holds for Strata: POSITION and NORMAL are VEC3, TEXCOORD_0 VEC2, COLOR_0 VEC3
+// or VEC4 (RGB or RGBA), indices SCALAR.
+enum class AccessorUse { Position, Normal, TexCoord, Colour, Index };
 
-// The accessor's elements, their components one after another (a normalized integer mapped onto
-// [0, 1] or [-1, 1]); throws strata::Error naming `where` and the accessor on anything malformed.
+// The accessor's elements, their components one after another (3 or 4 per COLOR_0 element, as its
+// type says; a normalized integer mapped onto [0, 1] or [-1, 1]); throws strata::Error naming
+// `where` and the accessor on anything malformed.
 std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse use, const std::string& where);
 
 // Marks an index past the primitive's vertices among accessorIndices' answer.

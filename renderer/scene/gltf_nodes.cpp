@@ -9,6 +9,7 @@
 #include <set>
 #include <optional>
 #include <utility>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -78,17 +79,17 @@ glm::dmat4 localTransform(const GltfModel& gltf, const tinygltf::Node& node, int
     return transform;
 }
 
-// What makes two of a file's primitives the same geometry: their POSITION, NORMAL and TEXCOORD_0
-// accessors, their indices (-1 for none), mode and material.
-using PrimitiveKey = std::array<int, 6>;
+// What makes two of a file's primitives the same geometry: their POSITION, NORMAL, TEXCOORD_0
+// and COLOR_0 accessors, their indices (-1 for none), mode and material.
+using PrimitiveKey = std::array<int, 7>;
 
 PrimitiveKey keyOf(const tinygltf::Primitive& primitive) {
     const auto attribute = [&](const char* name) {
         const auto it = primitive.attributes.find(name);
         return it == primitive.attributes.end() ? -1 : it->second;
     };
-    return {attribute("POSITION"), attribute("NORMAL"), attribute("TEXCOORD_0"), primitive.indices, primitive.mode,
-            primitive.material};
+    return {attribute("POSITION"), attribute("NORMAL"), attribute("TEXCOORD_0"), attribute("COLOR_0"),
+            primitive.indices, primitive.mode, primitive.material};
 }
 
 // A node with a mesh, at its world transform: a use of each of the mesh's primitives. Kept per
@@ -118,6 +119,7 @@ public:
         // A flat scene keeps no per-triangle normal indices, one without UVs none (mesh.h).
         if (parsed_.mesh.normals.empty()) parsed_.mesh.triangleNormals.clear();
         if (parsed_.mesh.uvs.empty()) parsed_.mesh.triangleUvs.clear();
+        if (parsed_.mesh.colours.empty()) parsed_.mesh.triangleColours.clear();
         if (parsed_.camera) aimGltfCameraAtScene(*parsed_.camera, parsed_.mesh);
         return std::move(parsed_);
     }
@@ -355,6 +357,18 @@ private:
                      std::to_string(vertexCount));
             }
         }
+        // COLOR_0, RGB or RGBA: glTF 2.0, "Meshes", multiplies the base colour by RGB. Its alpha
+        // would multiply the base colour's, which Strata reads only from a MASK texture; not read.
+        std::vector<double> colours;
+        size_t colourComponents = 0;
+        if (const auto colour = primitive.attributes.find("COLOR_0"); colour != primitive.attributes.end()) {
+            colours = accessorValues(gltf_, colour->second, AccessorUse::Colour, where);
+            colourComponents = gltf_.model.accessors[static_cast<size_t>(colour->second)].type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+            if (colours.size() / colourComponents != vertexCount) {
+                fail(where + ": COLOR_0 has " + std::to_string(colours.size() / colourComponents) +
+                     " elements, POSITION " + std::to_string(vertexCount));
+            }
+        }
         // An index past the vertices leaves out the triangles that use it, with a warning, as
         // assimp does (kIndexOutOfRange marks it until the triangles are made).
         std::vector<uint32_t> vertices;
@@ -399,6 +413,10 @@ private:
             const glm::dvec3 uv = uvTransform * glm::dvec3(texCoords[2 * v], texCoords[2 * v + 1], 1.0);
             mesh.uvs.emplace_back(static_cast<float>(uv.x), static_cast<float>(1.0 - uv.y));
         }
+        const auto firstColour = static_cast<uint32_t>(mesh.colours.size());
+        for (size_t v = 0; v < colours.size(); v += colourComponents) {
+            mesh.colours.emplace_back(glm::clamp(glm::dvec3(colours[v], colours[v + 1], colours[v + 2]), 0.0, 1.0));
+        }
         for (size_t c = 0; c < corners.size(); c += 3) {
             std::array<uint32_t, 3> corner{corners[c], corners[c + 1], corners[c + 2]};
             if (mirrored) std::swap(corner[1], corner[2]);
@@ -420,6 +438,10 @@ private:
                                     return mesh.normals[i] == glm::vec3(0.0f);
                                 });
             mesh.triangleNormals.push_back(shaded ? triangleNormals : kNoNormals);
+            mesh.triangleColours.push_back(colours.empty() ? kNoColours
+                                                           : std::array<uint32_t, 3>{firstColour + corner[0],
+                                                                                     firstColour + corner[1],
+                                                                                     firstColour + corner[2]});
             mesh.triangleUvs.push_back(texCoords.empty() ? kNoUvs
                                                          : std::array<uint32_t, 3>{firstUv + corner[0], firstUv + corner[1],
                                                                                    firstUv + corner[2]});

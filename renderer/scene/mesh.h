@@ -25,6 +25,7 @@ namespace strata {
 
 inline constexpr std::array<uint32_t, 3> kNoNormals{UINT32_MAX, UINT32_MAX, UINT32_MAX};
 inline constexpr std::array<uint32_t, 3> kNoUvs = kNoNormals;
+inline constexpr std::array<uint32_t, 3> kNoColours = kNoNormals;
 
 // Triangles [firstTriangle, firstTriangle + triangleCount) of a mesh, in their own coordinates,
 // drawn at each placement: an affine object-to-world transform (the last row 0 0 0 1) of nonzero
@@ -51,6 +52,11 @@ struct MeshData {
     // lookups all read uv (0, 0)). Empty: no triangle has any.
     std::vector<glm::vec2> uvs;
     std::vector<std::array<uint32_t, 3>> triangleUvs;
+    // Vertex colours in [0, 1] (OBJ `v x y z r g b`, glTF COLOR_0), interpolated across each
+    // triangle and multiplying its material's diffuse or base colour, likewise: three indices into
+    // `colours` per triangle, or kNoColours for a triangle without (white). Empty: none has any.
+    std::vector<glm::vec3> colours;
+    std::vector<std::array<uint32_t, 3>> triangleColours;
     std::vector<Material> materials;
     // Disjoint ranges of the triangles, in increasing order, each with vertices of its own.
     std::vector<SharedMesh> sharedMeshes;

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <utility>
 #include <vector>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
@@ -245,6 +246,10 @@ struct ObjScan {
     // "nan" as 0, so its own normals cannot tell.
     std::vector<glm::vec3> normals;
     size_t firstUnusableNormalLine = 0;  // the first vn without a direction; 0: none
+    // Every vertex's colour (`v x y z r g b`, or `v x y z w r g b`), clamped to [0, 1], white for a
+    // vertex without; empty until a v line has one.
+    std::vector<glm::vec3> colours;
+    size_t firstClampedColourLine = 0;  // the first colour outside [0, 1]; 0: none
     uint64_t triangles = 0;              // the faces' once triangulated (n - 2 each)
     uint64_t faces = 0;
     // Faces of more than 255 corners, which tinyobjloader counts in a byte: (which face, corners).
@@ -253,6 +258,18 @@ struct ObjScan {
     bool hasLines = false;               // l statements
     std::vector<std::string> warnings;
 };
+
+// Records the colour of `vertex`, the last three numbers of its v line (white where one is not
+// finite: the vertex is then left out with its faces, as one with a non-finite coordinate).
+void addVertexColour(ObjScan& scan, size_t vertex, size_t line, const std::vector<std::string_view>& words) {
+    scan.colours.resize(vertex, glm::vec3(1.0f));
+    const size_t r = words.size() - 3;
+    glm::vec3 colour(floatOf(words[r]), floatOf(words[r + 1]), floatOf(words[r + 2]));
+    if (!std::isfinite(colour.x + colour.y + colour.z)) colour = glm::vec3(1.0f);
+    const glm::vec3 clamped = glm::clamp(colour, 0.0f, 1.0f);
+    if (clamped != colour && scan.firstClampedColourLine == 0) scan.firstClampedColourLine = line;
+    scan.colours.push_back(clamped);
+}
 
 // The file names of an mtllib line, each with the line.
 void addLibraries(std::vector<NamedLine>& libraries, size_t line, const std::vector<std::string_view>& words) {
@@ -266,8 +283,9 @@ ObjScan validateObj(const std::string& text, const std::string& name) {
     forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "v") {
-            // x y z [w] or x y z r g b
+            // x y z [w], or x y z [w] r g b
             if (!checkNumbers(name, line, words, 3, 7, true)) scan.nonFiniteVertices.push_back(vertices);
+            if (words.size() >= 7) addVertexColour(scan, vertices, line, words);
             ++vertices;
         } else if (key == "vn") {
             checkNumbers(name, line, words, 3, 3, true);
@@ -735,6 +753,16 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
     if (!anyUvs) {
         mesh.uvs.clear();
         mesh.triangleUvs.clear();
+    }
+    // A vertex colour is the vertex's, so a triangle's colours are its vertices'.
+    if (!scan.colours.empty()) {
+        mesh.colours = scan.colours;
+        mesh.colours.resize(mesh.positions.size(), glm::vec3(1.0f));
+        mesh.triangleColours = mesh.triangles;
+    }
+    if (scan.firstClampedColourLine > 0) {
+        warnings.push_back(objName + ":" + std::to_string(scan.firstClampedColourLine) +
+                           ": vertex colours outside 0..1 are clamped to it (OBJ colours are fractions, not bytes)");
     }
     if (flatForUnusableNormals > 0) {
         warnings.push_back(objName + ":" + std::to_string(scan.firstUnusableNormalLine) +

@@ -83,6 +83,9 @@ const MeshData& validated(const MeshData& mesh) {
     if (!mesh.triangleUvs.empty() && mesh.triangleUvs.size() != mesh.triangles.size()) {
         throw Error("the scene needs texture coordinate indices for every triangle or none");
     }
+    if (!mesh.triangleColours.empty() && mesh.triangleColours.size() != mesh.triangles.size()) {
+        throw Error("the scene needs vertex colour indices for every triangle or none");
+    }
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
         for (uint32_t index : mesh.triangles[i]) {
             if (index >= mesh.positions.size()) throw Error("a triangle's vertex index is out of range");
@@ -98,6 +101,11 @@ const MeshData& validated(const MeshData& mesh) {
         if (!mesh.triangleUvs.empty() && mesh.triangleUvs[i] != kNoUvs) {
             for (uint32_t index : mesh.triangleUvs[i]) {
                 if (index >= mesh.uvs.size()) throw Error("a triangle's texture coordinate index is out of range");
+            }
+        }
+        if (!mesh.triangleColours.empty() && mesh.triangleColours[i] != kNoColours) {
+            for (uint32_t index : mesh.triangleColours[i]) {
+                if (index >= mesh.colours.size()) throw Error("a triangle's vertex colour index is out of range");
             }
         }
     }
@@ -120,6 +128,7 @@ MeshData& orientedToNormals(MeshData& mesh) {
             std::swap(tri[1], tri[2]);
             std::swap(corners[1], corners[2]);
             if (!mesh.triangleUvs.empty()) std::swap(mesh.triangleUvs[i][1], mesh.triangleUvs[i][2]);
+            if (!mesh.triangleColours.empty()) std::swap(mesh.triangleColours[i][1], mesh.triangleColours[i][2]);
         }
     }
     return mesh;
@@ -141,6 +150,7 @@ void reorderTriangles(MeshData& mesh, const std::vector<uint32_t>& order) {
     reordered(mesh.triangleMaterials);
     reordered(mesh.triangleNormals);
     reordered(mesh.triangleUvs);
+    reordered(mesh.triangleColours);
 }
 
 // Appends triangle `t` of a shared mesh placed by `placement` as a world triangle of its own
@@ -163,10 +173,16 @@ void appendPlacedCopy(MeshData& mesh, uint32_t t, const glm::mat4& placement) {
             mesh.triangleNormals.push_back({firstNormal, firstNormal + 1, firstNormal + 2});
         }
     }
-    if (!mesh.triangleUvs.empty()) {
-        const std::array<uint32_t, 3> uvs = mesh.triangleUvs[t];
-        mesh.triangleUvs.push_back(uvs == kNoUvs ? kNoUvs : std::array<uint32_t, 3>{uvs[corners[0]], uvs[corners[1]], uvs[corners[2]]});
-    }
+    // The copy's corners in the order of `corners`, of a per-triangle list of corner indices.
+    const auto appendCorners = [&](std::vector<std::array<uint32_t, 3>>& list, const std::array<uint32_t, 3>& none) {
+        if (list.empty()) return;
+        const std::array<uint32_t, 3> original = list[t];
+        list.push_back(original == none ? none
+                                        : std::array<uint32_t, 3>{original[corners[0]], original[corners[1]],
+                                                                  original[corners[2]]});
+    };
+    appendCorners(mesh.triangleUvs, kNoUvs);
+    appendCorners(mesh.triangleColours, kNoColours);
 }
 
 // Lays the triangles out as the scene traces them (Scene's constructor): each shared mesh's
@@ -560,6 +576,11 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
                 hit.shadingNormal = mapped;
             }
         }
+    }
+    hit.colour = glm::vec3(1.0f);
+    if (!mesh_.triangleColours.empty() && mesh_.triangleColours[triangle] != kNoColours) {
+        const auto& corners = mesh_.triangleColours[triangle];
+        hit.colour = b0 * mesh_.colours[corners[0]] + b1 * mesh_.colours[corners[1]] + b2 * mesh_.colours[corners[2]];
     }
     hit.triangle = triangle;
     return hit;

@@ -56,6 +56,7 @@ struct SurfaceHit {
     glm::vec3 shadingNormal;  // unit: interpolated from the vertex normals, then normal-mapped;
                               // `normal` when flat
     glm::vec2 uv;             // texture coordinates, (0, 0) on a triangle without
+    glm::vec3 colour;         // the vertex colours interpolated, (1, 1, 1) on a triangle without
     uint32_t triangle;        // and RayHit::placement, for what is in world coordinates above
     bool smooth;              // the shading normal is not `normal` (interpolated or mapped)
 };

@@ -1,6 +1,7 @@
 // Textures in the path tracer: a textured emitter lights as its texture says, by light samples and
 // by bounces alike (unbiased, lights/area_light.h); cut-outs let camera, bounce and shadow rays
 // through (scene/cutout_filter.h); a flat normal map changes nothing (materials/normal_map.h).
+// Vertex colours multiply the albedo as a colour texture does.
 // On Lambert's polygon case (test_support.h): receiver radiance rho E / pi at depth 1.
 #include <doctest/doctest.h>
 
@@ -12,6 +13,7 @@
 #include "scene/scene.h"
 #include "test_support.h"
 #include "util/constants.h"
+#include "util/luminance.h"
 
 using namespace strata;
 
@@ -144,4 +146,19 @@ TEST_CASE("a tilted normal map tilts the shading normal toward +u") {
     CHECK(surface.shadingNormal.x == doctest::Approx(0.6));
     CHECK(surface.shadingNormal.y == doctest::Approx(0.0));
     CHECK(surface.shadingNormal.z == doctest::Approx(0.8));
+}
+
+TEST_CASE("vertex colours multiply the receiver's albedo by their value interpolated where the ray lands") {
+    // A linear colour field over the receiver, c(x, y) = (0.5 + x / 250, 0.5 + y / 250, 0.3), given
+    // at its corners: interpolated across either triangle it is exact, (0.5, 0.5, 0.3) at the origin.
+    MeshData mesh = test::lambertSquareMesh(receiver());
+    for (size_t v = 0; v < 4; ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        mesh.colours.emplace_back(0.5f + p.x / 250.0f, 0.5f + p.y / 250.0f, 0.3f);
+    }
+    mesh.triangleColours = {{0, 1, 2}, {0, 2, 3}, kNoColours, kNoColours};
+    const Scene scene(std::move(mesh));
+    const double expected = luminance(glm::dvec3(0.5, 0.5, 0.3)) * kRho * test::kLambertSquareIrradiance / kPi;
+    checkRadiance(receiverRadiance(scene, true), expected);
+    checkRadiance(receiverRadiance(scene, false), expected);
 }

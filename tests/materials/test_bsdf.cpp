@@ -371,3 +371,31 @@ TEST_CASE("material table: a textured material is taken to read the diffuse numb
     CHECK(textured.bsdf(0, glm::vec2(0.5f)).readsDiffuseNumbers());
     CHECK(textured.readsDiffuseNumbers(0));
 }
+
+TEST_CASE("material table: a vertex colour multiplies Kd, and a glTF base colour in both its lobes") {
+    const glm::vec3 colour(0.2f, 1.0f, 0.5f);
+    // Seen and lit along the normal: a Lambertian f is Kd / pi, a metal's GGX term F0 times a
+    // number that does not depend on F0 (Schlick's F at normal incidence is F0).
+    const glm::vec3 normal(0.0f, 0.0f, 1.0f);
+    const auto ratio = [&](const Material& m) {
+        const MaterialTable table({m});
+        const glm::vec3 white = table.bsdf(0, glm::vec2(0.0f), true).evaluate(normal, normal);
+        const glm::vec3 tinted = table.bsdf(0, glm::vec2(0.0f), true, colour).evaluate(normal, normal);
+        // White is the untinted BSDF, bit for bit.
+        CHECK(table.bsdf(0, glm::vec2(0.0f), true, glm::vec3(1.0f)).evaluate(normal, normal) == white);
+        return tinted / white;
+    };
+    Material lambertian;
+    lambertian.diffuse = glm::vec3(0.5f, 0.6f, 0.7f);
+    const glm::vec3 diffuse = ratio(lambertian);
+    for (int c = 0; c < 3; ++c) CHECK(diffuse[c] == doctest::Approx(colour[c]).epsilon(1e-6));
+
+    Material metal;
+    metal.metallicRoughness = MetallicRoughness{glm::vec3(0.9f), 1.0f};
+    const LayeredReflectance constants = fromMetallicRoughness(glm::vec3(0.9f), 1.0f);
+    metal.diffuse = constants.diffuse;
+    metal.specular = constants.specular;
+    metal.roughness = 0.3f;
+    const glm::vec3 specular = ratio(metal);
+    for (int c = 0; c < 3; ++c) CHECK(specular[c] == doctest::Approx(colour[c]).epsilon(1e-5));
+}

@@ -87,3 +87,36 @@ TEST_CASE("gltf nodes: assimp's incomplete and out-of-range test models open as 
                                 "left out";
     CHECK(std::count(index.report.warnings.begin(), index.report.warnings.end(), warning) == 1);
 }
+
+TEST_CASE("gltf nodes: COLOR_0 gives vertex colours, RGB of float VEC3 or normalized VEC4, white elsewhere") {
+    test::Model model;
+    const int positions = model.positions(kQuadPositions);
+    const int floats =
+        model.accessor(std::vector<float>{0.1f, 0.2f, 0.3f, 1, 1, 1, 0, 0, 0, 0.5f, 2.0f, -1}, "VEC3", 5126, 4);
+    const int indices = model.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, "SCALAR", 5123, 6);
+    model.meshNode({{"attributes", {{"POSITION", positions}, {"COLOR_0", floats}}}, {"indices", indices}});
+    const int bytes = model.accessor(std::vector<uint8_t>{255, 0, 51, 7, 0, 255, 102, 7, 0, 0, 0, 0}, "VEC4", 5121, 3);
+    model.doc["accessors"][bytes]["normalized"] = true;
+    model.meshNode({{"attributes", {{"POSITION", model.positions({0, 0, 1, 1, 0, 1, 0, 1, 1})}, {"COLOR_0", bytes}}}});
+    model.meshNode({{"attributes", {{"POSITION", model.positions({0, 0, 2, 1, 0, 2, 0, 1, 2})}}}});
+    const MeshData mesh = parseGltfScene(test::bundleOf(model.gltf())).mesh;
+    REQUIRE(mesh.triangles.size() == 4);
+    REQUIRE(mesh.colours.size() == 7);
+    CHECK(mesh.colours[0] == glm::vec3(0.1f, 0.2f, 0.3f));
+    CHECK(mesh.colours[3] == glm::vec3(0.5f, 1.0f, 0.0f));  // clamped to [0, 1]
+    CHECK(mesh.colours[4] == glm::vec3(1.0f, 0.0f, 0.2f));  // 255 0 51 of 255; alpha not read
+    CHECK(mesh.colours[5] == glm::vec3(0.0f, 1.0f, 0.4f));
+    CHECK(mesh.triangleColours[0] == std::array<uint32_t, 3>{0, 1, 2});
+    CHECK(mesh.triangleColours[2] == std::array<uint32_t, 3>{4, 5, 6});
+    CHECK(mesh.triangleColours[3] == kNoColours);
+    // What glTF does not allow for COLOR_0 is refused by name.
+    model.doc["accessors"][bytes]["normalized"] = false;
+    CHECK(errorOf(model).find("COLOR_0 accessor " + std::to_string(bytes) +
+                              " has component type 5121, which glTF does not allow for it") != std::string::npos);
+    model.doc["accessors"][bytes]["normalized"] = true;
+    model.doc["accessors"][bytes]["type"] = "VEC2";
+    CHECK(errorOf(model).find("is not a VEC3 or VEC4") != std::string::npos);
+    model.doc["accessors"][bytes]["type"] = "VEC4";
+    model.doc["meshes"][1]["primitives"][0]["attributes"]["COLOR_0"] = floats;
+    CHECK(errorOf(model).find("COLOR_0 has 4 elements, POSITION 3") != std::string::npos);
+}

@@ -263,6 +263,26 @@ TEST_CASE("obj: faces in a smoothing group without vn share normals within the g
     for (uint32_t v : mesh.triangles[5]) CHECK(normalAt(5, v) == glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
+TEST_CASE("obj: v x y z r g b gives each vertex its colour, a vertex without one white, past 0..1 clamped") {
+    LoadReport report;
+    const MeshData mesh = parseObj("v 0 0 0\nv 1 0 0 0.2 0.4 0.6\nv 0 1 0 1 0.5 0.25 1\nv 1 1 0 2 -1 0.5\n"
+                                   "f 1 2 3\nf 2 4 3\n",
+                                   "scene.obj", "", "m.mtl", &report);
+    REQUIRE(mesh.colours.size() == 4);
+    CHECK(mesh.colours[0] == glm::vec3(1.0f));                 // no colour: white
+    CHECK(mesh.colours[1] == glm::vec3(0.2f, 0.4f, 0.6f));     // x y z r g b
+    CHECK(mesh.colours[2] == glm::vec3(0.5f, 0.25f, 1.0f));    // x y z w r g b: the last three
+    CHECK(mesh.colours[3] == glm::vec3(1.0f, 0.0f, 0.5f));     // clamped
+    // A triangle's colours are its vertices'.
+    CHECK(mesh.triangleColours == mesh.triangles);
+    REQUIRE(report.warnings.size() == 1);
+    CHECK(report.warnings[0] == "scene.obj:4: vertex colours outside 0..1 are clamped to it (OBJ colours are fractions, not bytes)");
+    // Without a colour on any v line, none.
+    const MeshData plain = parseObj("v 0 0 0\nv 1 0 0 1\nv 0 1 0\nf 1 2 3\n", "scene.obj", "", "m.mtl");
+    CHECK(plain.colours.empty());
+    CHECK(plain.triangleColours.empty());
+}
+
 TEST_CASE("obj: a split polygon keeps each corner's normal, a dropped triangle its normals too") {
     // Vertex i has normal i on every corner, so each kept triangle's normals equal its vertices.
     const MeshData mesh = parseObj(
