@@ -187,6 +187,7 @@ void RenderCommand::run() const {
             {"nee", settings.integrator.nextEventEstimation},
             {"light_sampler", lightSamplerName(settings.integrator.lightSampler)},
             {"roulette_depth", settings.integrator.rouletteDepth},
+            {"terminator_offset", settings.integrator.terminatorOffset},
             {"seed", settings.seed},
             {"ranks", job.ranks()},
             {"threads", session.threadCount()},  // per rank

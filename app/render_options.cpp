@@ -42,6 +42,12 @@ void RenderOptions::addTo(CLI::App& command) {
                            " (power: by power alone; tree: by a light tree weighing each light by "
                            "what it can send to the point; auto: the tree in scenes with many emitters)")
         ->capture_default_str();
+    command.add_option("--terminator-offset", terminatorOffset,
+                       "Shadow terminator of coarse smooth meshes: a shadow ray toward a light less than "
+                       "this cosine above a facet with vertex normals (or below it, but above the "
+                       "shading normal's horizon) leaves from the curved surface the normals describe "
+                       "(0: off, the triangles as they are; Cycles' geometry offset is 0.1)")
+        ->capture_default_str();
     auto* envOption = command.add_option(
         "--env", env,
         "Environment seen by rays leaving the scene: a latitude-longitude EXR (2:1, +y up) or "
@@ -108,6 +114,9 @@ std::vector<std::string> RenderOptions::arguments() const {
     }
     if (nee != defaults.nee) args.push_back(nee ? "--nee" : "--no-nee");
     if (lightSampler != defaults.lightSampler) args.insert(args.end(), {"--light-sampler", lightSampler});
+    if (terminatorOffset != defaults.terminatorOffset) {
+        args.insert(args.end(), {"--terminator-offset", text(terminatorOffset)});
+    }
     if (!env.empty()) args.insert(args.end(), {"--env", env});
     if (!envColor.empty()) {
         args.push_back("--env-color");
@@ -156,6 +165,10 @@ RenderSettings RenderOptions::renderSettings(const Scene& scene) const {
     settings.integrator.lightSampler = *lightKind;
     if (rouletteDepth < -1) throw UsageError("--roulette-depth: must be -1 (off) or at least 0");
     settings.integrator.rouletteDepth = rouletteDepth;
+    if (!(terminatorOffset >= 0.0f && terminatorOffset <= 1.0f)) {
+        throw UsageError("--terminator-offset: must be a cosine in 0..1 (0: off)");
+    }
+    settings.integrator.terminatorOffset = terminatorOffset;
     settings.seed = seed;
     settings.threads = threadCount();
     if (!(noiseThreshold >= 0.0 && noiseThreshold <= 10.0)) {

@@ -29,6 +29,7 @@ struct RenderOptions {
     bool nee = kProgramDefaults.nextEventEstimation;
     int rouletteDepth = kProgramDefaults.rouletteDepth;
     std::string lightSampler{lightSamplerName(kProgramDefaults.lightSampler)};
+    float terminatorOffset = kProgramDefaults.terminatorOffset;  // PathIntegratorSettings::terminatorOffset
     std::string env;               // --env FILE.exr or "none"; empty: the default rule
     std::vector<float> envColor;   // --env-color R G B
     float envRotate = 0.0f;        // --env-rotate, degrees about +y

@@ -82,6 +82,7 @@ void ViewCommand::run() const {
     viewerSettings.nextEventEstimation = settings.integrator.nextEventEstimation;
     viewerSettings.rouletteDepth = settings.integrator.rouletteDepth;
     viewerSettings.lightSampler = settings.integrator.lightSampler;
+    viewerSettings.terminatorOffset = settings.integrator.terminatorOffset;
     if (render.epsilon) {
         viewerSettings.depthFromEpsilon = true;
         viewerSettings.epsilon = static_cast<float>(*render.epsilon);

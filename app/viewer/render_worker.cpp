@@ -66,7 +66,7 @@ bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
     return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
            a.height != b.height || a.sides != b.sides ||
            a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
-           a.lightSampler != b.lightSampler ||
+           a.lightSampler != b.lightSampler || a.terminatorOffset != b.terminatorOffset ||
            a.seed != b.seed ||
            a.threads != b.threads || a.preview != b.preview || a.reference != b.reference ||
            a.noiseThreshold != b.noiseThreshold || a.backdrop != b.backdrop;
@@ -79,6 +79,7 @@ RenderSettings renderSettings(const WorkerConfig& config, const SideConfig& side
     settings.integrator.nextEventEstimation = config.nextEventEstimation;
     settings.integrator.rouletteDepth = config.rouletteDepth;
     settings.integrator.lightSampler = config.lightSampler;
+    settings.integrator.terminatorOffset = config.terminatorOffset;
     settings.seed = config.seed;
     settings.threads = config.threads;
     // Render threads yield to the UI thread (and llvmpipe's) on a small machine.

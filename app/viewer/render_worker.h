@@ -41,6 +41,7 @@ struct WorkerConfig {
     bool nextEventEstimation = true;
     int rouletteDepth = kRouletteDepthDefault;  // PathIntegratorSettings::rouletteDepth
     LightSamplerKind lightSampler = LightSamplerKind::Auto;  // PathIntegratorSettings::lightSampler
+    float terminatorOffset = 0.0f;  // PathIntegratorSettings::terminatorOffset
     uint64_t seed = 0;
     int threads = 0;
     // Camera moving: one path per pixel at 1/kPreviewDivisor of the resolution, then wait.

@@ -197,6 +197,7 @@ void Viewer::frame(const FrameTarget& target) {
     config.nextEventEstimation = settings_.nextEventEstimation;
     config.rouletteDepth = settings_.rouletteDepth;
     config.lightSampler = settings_.lightSampler;
+    config.terminatorOffset = settings_.terminatorOffset;
     config.seed = settings_.seed;
     config.threads = settings_.threads;
     config.preview = now - lastMotion_ < kSettleTime;

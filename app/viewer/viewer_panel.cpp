@@ -293,6 +293,14 @@ void ViewerPanel::samplingControls(ViewerSettings& settings, const Scene& scene)
         }
         ImGui::EndCombo();
     }
+    ImGui::SliderFloat("terminator offset", &settings.terminatorOffset, 0.0f, 1.0f,
+                       settings.terminatorOffset > 0.0f ? "%.2f" : "off");
+    remember("terminator offset");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("Coarse meshes with vertex normals: shadow rays toward a light within this\n"
+                          "cosine of a facet's plane leave from the curved surface the normals\n"
+                          "describe, not the facet (0: off; Cycles' geometry offset is 0.1)");
+    }
     ImGui::EndDisabled();
     ImGui::SliderInt("roulette from bounce", &settings.rouletteDepth, -1, kMaxDepth,
                      settings.rouletteDepth < 0 ? "off" : "%d");

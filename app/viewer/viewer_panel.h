@@ -42,6 +42,7 @@ struct ViewerSettings {
     bool nextEventEstimation = true;
     int rouletteDepth = kRouletteDepthDefault;  // Russian roulette from this bounce on; -1: off
     LightSamplerKind lightSampler = LightSamplerKind::Auto;  // next-event estimation's light choice
+    float terminatorOffset = 0.0f;  // smooth facets' shadow rays near the terminator; 0: off
     uint64_t seed = 0;
     int threads = 0;
     float resolutionScale = 1.0f;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/rounding.h"
+#include "geometry/smooth_surface.h"
 #include "util/components.h"
 
 namespace strata {
@@ -256,7 +257,8 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
     // Light that reaches the camera after this vertex's reflection counts as bounce + 1
     // bounces, which the depth allows here. A delta lobe reflects nothing a light sample finds.
     if (sampleLights_ && bsdf.hasNonSpecularLobe()) {
-        lightSample(surface, reference, choiceNormal, frame, wo, bsdf, lightU, path.weight, shadow);
+        lightSample(*hit, viewer.front, surface, reference, choiceNormal, frame, wo, bsdf, lightU, path.weight,
+                    shadow);
     }
     // The next ray could add only the emission it finds (bounce + 1 == depth): where every light
     // is a delta light, none, and it is not traced.
@@ -320,41 +322,67 @@ float PathIntegrator::choiceProbability(uint32_t light, const glm::vec3& point, 
                       : scene_.lights().sampler().probability(light);
 }
 
-void PathIntegrator::lightSample(const SurfaceHit& surface, const glm::vec3& reference,
-                                 const glm::vec3& choiceNormal, const Frame& frame, const glm::vec3& wo,
-                                 const Bsdf& bsdf, const glm::vec3& u, const glm::vec3& weight,
-                                 std::optional<ShadowRay>& shadow) const {
+void PathIntegrator::lightSample(const RayHit& hit, bool front, const SurfaceHit& surface,
+                                 const glm::vec3& reference, const glm::vec3& choiceNormal, const Frame& frame,
+                                 const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u,
+                                 const glm::vec3& weight, std::optional<ShadowRay>& shadow) const {
     const LightChoice choice = chooseLight(u.x, reference, choiceNormal);
     const Light& light = scene_.lights().light(choice.light);
     const auto sample = light.sample(reference, {u.y, u.z});
     if (!sample) return;
     const glm::vec3 wi = frame.toLocal(sample->direction);
+    const float geometricCosine = glm::dot(sample->direction, surface.normal);
+    // A smooth surface's shadow ray near the terminator leaves from the curved surface its vertex
+    // normals describe, `lift` off the facet (geometry/smooth_surface.h); zero: from the facet.
+    glm::vec3 lift(0.0f);
     if (isTransmission(bsdf.flags())) {
         // Light from either side: the shading and geometric sides of its direction must agree.
-        if (!(glm::dot(sample->direction, surface.normal) * wi.z > 0.0f)) return;
+        if (!(geometricCosine * wi.z > 0.0f)) return;
     } else {
-        // Light from behind the surface itself, or from below the shading hemisphere, reflects nothing.
-        if (surface.smooth && !(glm::dot(sample->direction, surface.normal) > 0.0f)) return;
+        // Light from below the shading hemisphere reflects nothing; nor does light from behind
+        // the facet itself, unless the shadow ray leaves from above it.
         if (!(wi.z > 0.0f)) return;
+        if (surface.smooth && settings_.terminatorOffset > 0.0f) {
+            const float share = terminatorLiftShare(geometricCosine, settings_.terminatorOffset);
+            if (share > 0.0f) lift = share * scene_.smoothSurfaceLift(hit, front);
+            if (!(glm::dot(lift, surface.normal) > 0.0f)) lift = glm::vec3(0.0f);
+        }
+        if (surface.smooth && !(geometricCosine > 0.0f) && lift == glm::vec3(0.0f)) return;
     }
+    const bool lifted = lift != glm::vec3(0.0f);
     const glm::vec3 f = bsdf.evaluate(wo, wi);
     if (isZero(f)) return;
     const float cosine = std::abs(wi.z);
-    const glm::vec3 origin = spawnOrigin(surface, reference, sample->direction);
+    glm::vec3 origin = spawnOrigin(surface, reference, sample->direction);
     glm::vec3 direction = sample->direction;
     float reach = sample->distance;
+    if (lifted) {
+        // The lifted point, off the facet on its viewer's side by its own rounding too.
+        const glm::vec3 lifted = surface.point + lift;
+        origin = offsetRayOrigin(lifted, surface.pointError + gammaBound(1) * magnitudes(lifted), surface.normal,
+                                 surface.normal);
+    }
     // A segment to a point on a surface ends short of it: shortened, or at the point moved off
-    // the surface where shortening would not clear its rounding error (light.h).
+    // the surface where shortening would not clear its rounding error (light.h). From a lifted
+    // origin, the segment to a light's point is drawn again from there.
     if (sample->endsOffSurface) {
         const Segment segment = segmentBetween(origin, sample->offSurfaceEnd);
         if (!(segment.length > 0.0f)) return;
         direction = segment.direction;
         reach = segment.length * (1.0f - kShadowRayShortening);
-    } else if (sample->onSurface) {
-        reach *= 1.0f - kShadowRayShortening;
+    } else {
+        if (lifted && std::isfinite(reach)) {
+            const Segment segment = segmentBetween(origin, reference + direction * reach);
+            if (!(segment.length > 0.0f)) return;
+            direction = segment.direction;
+            reach = segment.length;
+        }
+        if (sample->onSurface) reach *= 1.0f - kShadowRayShortening;
     }
     float scale = cosine / choice.probability;
-    if (!light.isDelta()) {
+    // Below a reflecting facet's plane the direction sampler's rays do not go (onLobeSide): a
+    // lifted light sample there is the only technique, at full weight.
+    if (!light.isDelta() && !(lifted && !(geometricCosine > 0.0f))) {
         const float lightPdf = choice.probability * sample->pdf;
         scale = cosine * powerHeuristic(lightPdf, bsdf.pdf(wo, wi, warp_)) / lightPdf;
     }

@@ -48,6 +48,12 @@ struct PathIntegratorSettings {
     // How next-event estimation chooses its light (lights/scene_lights.h): by power, by the
     // light tree, or by the tree in scenes with many emitters.
     LightSamplerKind lightSampler = LightSamplerKind::Auto;
+    // The shadow terminator of coarse meshes with vertex normals (geometry/smooth_surface.h): a
+    // shadow ray toward a light less than this cosine above a facet's plane, or below it but
+    // above the shading normal's horizon, leaves from the curved surface the vertex normals
+    // describe rather than the facet (Cycles' "geometry offset", 0.1 there by default). 0: off,
+    // every shadow ray leaves the facet and the estimate is that of the triangles as they are.
+    float terminatorOffset = 0.0f;
 };
 
 // Russian roulette from this bounce on, as the programs do by default.
@@ -114,12 +120,15 @@ private:
     glm::vec3 emittedAlong(uint32_t light, const glm::vec3& direction, const LightHit& hit,
                            const PreviousVertex& previous) const;
     // One light sample at `surface` (normal facing the viewer) toward wo, from the numbers `u`
-    // (lightNumbers), the light chosen for `reference` and `choiceNormal`: sets `shadow` to its shadow ray and the reflected radiance it brings to a
-    // path of throughput `weight`, MIS-weighted against the direction sampler; leaves it empty
-    // when the sample brings nothing whatever the shadow ray finds.
-    void lightSample(const SurfaceHit& surface, const glm::vec3& reference, const glm::vec3& choiceNormal,
-                     const Frame& frame, const glm::vec3& wo, const Bsdf& bsdf, const glm::vec3& u,
-                     const glm::vec3& weight, std::optional<ShadowRay>& shadow) const;
+    // (lightNumbers), the light chosen for `reference` and `choiceNormal`: sets `shadow` to its
+    // shadow ray and the reflected radiance it brings to a path of throughput `weight`,
+    // MIS-weighted against the direction sampler; leaves it empty when the sample brings nothing
+    // whatever the shadow ray finds.
+    // `hit` and `front` (the side of the triangle the viewer is on) place the shadow ray's origin
+    // near the shadow terminator (PathIntegratorSettings::terminatorOffset).
+    void lightSample(const RayHit& hit, bool front, const SurfaceHit& surface, const glm::vec3& reference,
+                     const glm::vec3& choiceNormal, const Frame& frame, const glm::vec3& wo, const Bsdf& bsdf,
+                     const glm::vec3& u, const glm::vec3& weight, std::optional<ShadowRay>& shadow) const;
     // The light chosen for a sample at `point`, whose surface has normal `normal` (zero: light
     // from either side counts), and the probability of that choice for `light`.
     LightChoice chooseLight(float u, const glm::vec3& point, const glm::vec3& normal) const;

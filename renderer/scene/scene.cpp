@@ -12,6 +12,7 @@
 #include <glm/vector_relational.hpp>
 
 #include "geometry/rounding.h"
+#include "geometry/smooth_surface.h"
 #include "materials/normal_map.h"
 #include "util/error.h"
 
@@ -584,6 +585,21 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     }
     hit.triangle = triangle;
     return hit;
+}
+
+glm::vec3 Scene::smoothSurfaceLift(const RayHit& rayHit, bool front) const {
+    if (mesh_.triangleNormals.empty() || mesh_.triangleNormals[rayHit.triangle] == kNoNormals) return glm::vec3(0.0f);
+    const auto& tri = mesh_.triangles[rayHit.triangle];
+    const auto& corners = mesh_.triangleNormals[rayHit.triangle];
+    const float side = front ? 1.0f : -1.0f;
+    const glm::vec3 lift = strata::smoothSurfaceLift(
+        {mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]},
+        {side * mesh_.normals[corners[0]], side * mesh_.normals[corners[1]], side * mesh_.normals[corners[2]]},
+        glm::vec3(1.0f - rayHit.u - rayHit.v, rayHit.u, rayHit.v));
+    // An affine map keeps a point on each vertex's tangent plane on that plane's image, so the
+    // lift is mapped as a displacement is.
+    if (rayHit.placement == kNoPlacement) return lift;
+    return glm::mat3(placements_[rayHit.placement].toWorld) * lift;
 }
 
 bool Scene::occluded(const Ray& ray, float distance) const {

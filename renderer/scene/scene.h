@@ -108,6 +108,10 @@ public:
     void occluded(std::span<const Ray> rays, std::span<const float> distances, std::span<bool> blocked) const;
     // The surface record at a hit.
     SurfaceHit surface(const RayHit& hit) const;
+    // The displacement, in world coordinates, from the hit's point to the curved surface that its
+    // triangle's vertex normals describe (geometry/smooth_surface.h), on the triangle's front
+    // side (`front`) or its back; zero on a triangle without vertex normals.
+    glm::vec3 smoothSurfaceLift(const RayHit& hit, bool front) const;
     // Whether anything blocks the open segment from origin to origin + direction * distance.
     bool occluded(const Ray& ray, float distance) const;
 

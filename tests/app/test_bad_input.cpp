@@ -215,6 +215,8 @@ const std::vector<BadInputCase> kCliCases = {
     {"render --epsilon 0", {}, "render {dir}/s.obj --epsilon 0", "--epsilon: must be positive", kBadUsage},
     {"render --roulette-depth -2", {}, "render {dir}/s.obj --roulette-depth -2",
      "--roulette-depth: must be -1 (off) or at least 0", kBadUsage},
+    {"render --terminator-offset past 1", {}, "render {dir}/s.obj --terminator-offset 1.5",
+     "--terminator-offset: must be a cosine in 0..1 (0: off)", kBadUsage},
     {"render --noise-threshold negative", {}, "render {dir}/s.obj --noise-threshold -1",
      "--noise-threshold: must be in 0..10", kBadUsage},
     {"render --tonemap unknown", {}, "render {dir}/s.obj --tonemap filmic", "--tonemap: unknown tonemap 'filmic'",

@@ -284,7 +284,7 @@ TEST_CASE("cli: --env overrides the scene description's environment, which stand
     CHECK(nlohmann::json::parse(dark.out)["mean_rgb"][1].get<double>() == 0.0);
 }
 
-TEST_CASE("cli: next-event estimation and Russian roulette are on by default, each with its switch") {
+TEST_CASE("cli: next-event estimation and Russian roulette are on by default, each with its switch, the terminator offset off") {
     const std::string render = "render " + furnace() + " --width 8 --height 8 --spp 24 --json";
     const auto settingsOf = [&](const std::string& options) {
         const auto result = test::runStrata(render + options);
@@ -296,6 +296,14 @@ TEST_CASE("cli: next-event estimation and Russian roulette are on by default, ea
     CHECK(settingsOf(" --nee") == std::pair{true, kRouletteDepthDefault});
     CHECK(settingsOf(" --no-nee") == std::pair{false, kRouletteDepthDefault});
     CHECK(settingsOf(" --roulette-depth -1") == std::pair{true, -1});
+    // The terminator offset is off unless asked for.
+    const auto offsetOf = [&](const std::string& options) {
+        const auto result = test::runStrata(render + options);
+        REQUIRE_MESSAGE(result.exitCode == 0, result.err);
+        return nlohmann::json::parse(result.out)["terminator_offset"].get<double>();
+    };
+    CHECK(offsetOf("") == 0.0);
+    CHECK(offsetOf(" --terminator-offset 0.25") == 0.25);
     const auto help = test::runStrata("render --help");
     REQUIRE(help.exitCode == 0);
     CHECK(help.out.find("--no-nee") != std::string::npos);

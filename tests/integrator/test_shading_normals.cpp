@@ -4,7 +4,9 @@
 // section 5.3, pi (1 + cos 60) / 2, since no direction below the surface itself counts; it leaks
 // nothing from below; seen at a grazing angle from the side its normals tilt away from, it falls
 // back to the geometric normal and reads rho exactly instead of black; and the 24 strata are those
-// of the shading frame.
+// of the shading frame. With the terminator offset (geometry/smooth_surface.h), a point light just
+// below a dome-normalled facet's plane but above its shading horizon lights it as the shading
+// normal says, and nowhere else does the offset change a bit.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -140,4 +142,66 @@ TEST_CASE("shading normals: the 24 strata are built on the shading frame") {
     // Uniform directions: the lune's share of the hemisphere is 60/180.
     const double n = 300.0 * 24.0;
     CHECK(std::abs(total / n - 1.0 / 3.0) < 4.0 * std::sqrt((1.0 / 3.0) * (2.0 / 3.0) / n));
+}
+
+namespace {
+
+// A lone triangle in z = 0 facing +z whose vertex normals lean out as a dome's would, lit by a
+// point light far along +x and `height` above its plane; the hit under the camera is at
+// (0.3, -0.2, 0), 0.3 from the edge the light lies beyond.
+Scene domeFacet(float height, bool smooth) {
+    MeshData mesh;
+    Material facet;
+    facet.diffuse = glm::vec3(kAlbedo);
+    mesh.materials = {facet};
+    mesh.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.triangleMaterials = {0};
+    if (smooth) {
+        for (const glm::vec3& p : mesh.positions) mesh.normals.push_back(glm::normalize(glm::vec3(0.5f * p.x, 0.5f * p.y, 1.0f)));
+        mesh.triangleNormals = {{0, 1, 2}};
+    }
+    mesh.pointLights = {PointLight{{50.0f, -0.2f, height}, glm::vec3(2500.0f)}};
+    mesh.environment = noSky();
+    return Scene(std::move(mesh));
+}
+
+const Ray kOntoFacet{{0.3f, -0.2f, 1.0f}, {0.0f, 0.0f, -1.0f}};
+
+float directLight(const Scene& scene, float terminatorOffset) {
+    PathIntegratorSettings settings{1, SamplerKind::Strata24Bsdf, true};
+    settings.terminatorOffset = terminatorOffset;
+    uint64_t rays = 0;
+    return PathIntegrator(scene, settings).radiance(kOntoFacet, PathSamples(5, 0, 0, 0), rays).x;
+}
+
+}  // namespace
+
+TEST_CASE("shading normals: with the terminator offset a light just below a smooth facet lights it by its shading normal") {
+    const Scene scene = domeFacet(-0.5f, true);
+    // The light is 0.57 degrees below the facet's plane: without the offset nothing reaches it.
+    CHECK(directLight(scene, 0.0f) == 0.0f);
+    // Lifted onto the dome, the shadow ray passes over the facet's edge before it could cross
+    // its plane, and nothing else is there: rho / pi I cos_s / r^2, cos_s with the shading normal.
+    const auto hit = scene.intersect(kOntoFacet);
+    REQUIRE(hit);
+    const SurfaceHit surface = scene.surface(*hit);
+    const glm::vec3 toLight = glm::vec3(50.0f, -0.2f, -0.5f) - surface.point;
+    const float cosine = glm::dot(surface.shadingNormal, glm::normalize(toLight));
+    REQUIRE(cosine > 0.05f);
+    const double exact = kAlbedo / M_PI * 2500.0 * cosine / glm::dot(toLight, toLight);
+    for (float offset : {0.1f, 0.5f}) CHECK(directLight(scene, offset) == doctest::Approx(exact).epsilon(1e-4));
+    // A flat facet has no curved surface to leave from: still nothing.
+    CHECK(directLight(domeFacet(-0.5f, false), 0.1f) == 0.0f);
+}
+
+TEST_CASE("shading normals: the terminator offset changes no bit where the light stands above its cutoff") {
+    // 30 degrees above the facet's plane (cosine 0.5 with its normal) the shadow ray leaves the
+    // facet with or without it; 0.2 degrees above, with a cutoff of 0.1, it leaves from the dome.
+    const Scene high = domeFacet(50.0f * std::tan(glm::radians(30.0f)), true);
+    CHECK(directLight(high, 0.1f) == directLight(high, 0.0f));
+    CHECK(directLight(high, 0.1f) > 0.0f);
+    const Scene grazing = domeFacet(0.2f, true);
+    CHECK(directLight(grazing, 0.1f) > 0.0f);
+    CHECK(directLight(grazing, 0.1f) == doctest::Approx(directLight(grazing, 0.0f)).epsilon(1e-3));
 }
