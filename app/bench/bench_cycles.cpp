@@ -53,7 +53,8 @@ std::string unsupported(const MeshData& mesh, bool lit) {
             return "material " + m.name + " is glossy other than a white conductor (Cycles' GGX has no Fresnel)";
         }
         if (m.textures.roughnessMetallic || m.textures.transmission || m.textures.clearcoat ||
-            m.textures.clearcoatRoughness || m.textures.emission || m.textures.coverage || m.textures.normal ||
+            m.textures.clearcoatRoughness || m.textures.specularGlossiness || m.textures.emission ||
+            m.textures.coverage || m.textures.normal ||
             (m.textures.colour && m.specular != glm::vec3(0.0f))) {
             return "material " + m.name + " has textures other than a diffuse colour";
         }

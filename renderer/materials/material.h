@@ -26,6 +26,14 @@ struct MetallicRoughness {
     float transmission = 0.0f;
 };
 
+// glTF's specular-glossiness parameters (KHR_materials_pbrSpecularGlossiness), kept when a texture
+// varies them, so that each hit maps its own colours onto Kd and Ks (specular_glossiness.h).
+struct SpecularGlossiness {
+    glm::vec3 diffuse{1.0f};
+    glm::vec3 specular{1.0f};
+    float glossiness = 1.0f;
+};
+
 struct MaterialTextures {
     // RGB times Kd (MTL map_Kd), or times the base colour (glTF baseColorTexture).
     std::shared_ptr<const Texture> colour;
@@ -48,6 +56,8 @@ struct MaterialTextures {
     // clearcoatRoughnessTexture).
     std::shared_ptr<const Texture> clearcoat;
     std::shared_ptr<const Texture> clearcoatRoughness;
+    // RGB times the specular colour, A times the glossiness (glTF specularGlossinessTexture).
+    std::shared_ptr<const Texture> specularGlossiness;
 };
 
 struct Material {
@@ -76,12 +86,14 @@ struct Material {
     // Set by glTF when a texture varies base colour or metallic: Kd and Ks are then mapped from
     // these at each hit, and `diffuse`/`specular` above are their untextured values.
     std::optional<MetallicRoughness> metallicRoughness{};
+    // Likewise for glTF's specular-glossiness model, when a texture varies it.
+    std::optional<SpecularGlossiness> specularGlossiness{};
     MaterialTextures textures{};
 
     // Whether any texture changes the BSDF from hit to hit.
     bool hasReflectanceTextures() const {
         return textures.colour || textures.roughnessMetallic || textures.transmission || textures.clearcoat ||
-               textures.clearcoatRoughness;
+               textures.clearcoatRoughness || textures.specularGlossiness;
     }
     // Whether the hit at `uv` is cut out (no surface there).
     bool cutOut(glm::vec2 uv) const {

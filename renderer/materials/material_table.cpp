@@ -7,6 +7,7 @@
 
 #include "materials/metallic_roughness.h"
 #include "materials/microfacet.h"
+#include "materials/specular_glossiness.h"
 #include "util/components.h"
 
 namespace strata {
@@ -27,8 +28,14 @@ glm::vec3 absorptionOf(const Material& m) {
 }
 
 // The layered model's two layers from a material's colour constants (MTL's Kd and Ks directly,
-// glTF's through its metallic-roughness mapping).
-LayeredReflectance reflectanceOf(const Material& m, const glm::vec3& colour, float metallicFactor) {
+// glTF's through its metallic-roughness or specular-glossiness mapping), the textures' colour,
+// metallic and specular colour at the hit applied.
+LayeredReflectance reflectanceOf(const Material& m, const glm::vec3& colour, float metallicFactor,
+                                 const glm::vec3& specularColour) {
+    if (m.specularGlossiness) {
+        const SpecularGlossiness& sg = *m.specularGlossiness;
+        return fromSpecularGlossiness(sg.diffuse * colour, sg.specular * specularColour);
+    }
     if (!m.metallicRoughness) return {m.diffuse * colour, m.specular};
     const MetallicRoughness& mr = *m.metallicRoughness;
     return fromMetallicRoughness(mr.baseColor * colour, mr.metallic * metallicFactor, mr.dielectricF0);
@@ -67,7 +74,9 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
         const bool textured = m.hasReflectanceTextures() && !black;
         materials_.push_back(m);
         if (textured) {
-            if ((m.textures.roughnessMetallic || m.textures.clearcoatRoughness) && !quantisedLobes_[0]) {
+            const bool variesRoughness =
+                m.textures.roughnessMetallic || m.textures.clearcoatRoughness || m.textures.specularGlossiness;
+            if (variesRoughness && !quantisedLobes_[0]) {
                 for (int level = 0; level < kRoughnessLevels; ++level) {
                     quantisedLobes_[static_cast<size_t>(level)] =
                         lobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
@@ -121,16 +130,25 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
     glm::vec3 colour = unitClamped(vertexColour);
     if (m.textures.colour) colour *= unitClamped(glm::vec3(m.textures.colour->lookup(uv)));
     float metallic = 1.0f;
+    glm::vec3 specularColour(1.0f);
+    std::optional<float> texturedRoughness;
     if (m.textures.roughnessMetallic) {
         const glm::vec4 texel = m.textures.roughnessMetallic->lookup(uv);
         metallic = unitClamped(texel.b);
-        p.roughness = m.roughness * unitClamped(texel.g);
-        p.lobe = quantisedLobe(p.roughness, false);
+        texturedRoughness = m.roughness * unitClamped(texel.g);
+    }
+    if (m.textures.specularGlossiness) {
+        const glm::vec4 texel = m.textures.specularGlossiness->lookup(uv);
+        specularColour = unitClamped(glm::vec3(texel));
+        texturedRoughness = 1.0f - (1.0f - m.roughness) * unitClamped(texel.a);
+    }
+    if (texturedRoughness) {
+        p.lobe = quantisedLobe(*texturedRoughness, false);
         // The quantised roughness, so that its limit 0 is the smooth one.
-        p.roughness = static_cast<float>(std::lround(unitClamped(p.roughness) * (kRoughnessLevels - 1))) /
+        p.roughness = static_cast<float>(std::lround(unitClamped(*texturedRoughness) * (kRoughnessLevels - 1))) /
                       (kRoughnessLevels - 1);
     }
-    const LayeredReflectance r = reflectanceOf(m, colour, metallic);
+    const LayeredReflectance r = reflectanceOf(m, colour, metallic, specularColour);
     p.diffuse = r.diffuse;
     p.specular = r.specular;
     if (m.metallicRoughness) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "materials/metallic_roughness.h"
+#include "materials/specular_glossiness.h"
 #include "util/printable.h"
 
 namespace strata {
@@ -84,20 +85,75 @@ float numberOf(const GltfModel& gltf, const tinygltf::Value& extension, const st
     return narrowed;
 }
 
-// The texture an extension's textureInfo `key` names, as textureOf reads a core one.
-std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
-                                                const std::string& key, const std::string& where, TextureEncoding encoding) {
-    if (!extension.Has(key)) return nullptr;
+// An extension's textureInfo `key` as the core's tinygltf::TextureInfo holds it (index -1: absent).
+struct ExtensionTextureInfo {
+    int index = -1;
+    int texCoord = 0;
+    tinygltf::ExtensionMap extensions;
+};
+ExtensionTextureInfo extensionTextureInfo(const GltfModel& gltf, const tinygltf::Value& extension,
+                                          const std::string& key, const std::string& where) {
+    ExtensionTextureInfo reference;
+    if (!extension.Has(key)) return reference;
     const tinygltf::Value& info = extension.Get(key);
     const tinygltf::Value& index = info.Get("index");
     if (!info.IsObject() || !index.IsInt()) gltf.fail(where + " " + key + " needs a texture index");
-    const tinygltf::Value& texCoord = info.Get("texCoord");
-    tinygltf::ExtensionMap nested;
+    reference.index = index.GetNumberAsInt();
+    if (info.Get("texCoord").IsInt()) reference.texCoord = info.Get("texCoord").GetNumberAsInt();
     if (info.Has("extensions") && info.Get("extensions").IsObject()) {
-        for (const std::string& name : info.Get("extensions").Keys()) nested[name] = info.Get("extensions").Get(name);
+        const tinygltf::Value& nested = info.Get("extensions");
+        for (const std::string& name : nested.Keys()) reference.extensions[name] = nested.Get(name);
     }
-    return textureOf(gltf, textures, where + " " + key, index.GetNumberAsInt(), texCoord.IsInt() ? texCoord.GetNumberAsInt() : 0,
-                     nested, encoding);
+    return reference;
+}
+
+// The texture an extension's textureInfo `key` names, as textureOf reads a core one.
+std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
+                                                const std::string& key, const std::string& where, TextureEncoding encoding) {
+    const ExtensionTextureInfo info = extensionTextureInfo(gltf, extension, key, where);
+    return textureOf(gltf, textures, where + " " + key, info.index, info.texCoord, info.extensions, encoding);
+}
+
+// The factor `key` of an extension's object: N numbers in 0..1, `fallback` when absent.
+template <size_t N>
+std::array<float, N> unitFactors(const GltfModel& gltf, const tinygltf::Value& extension, const std::string& key,
+                                 std::array<float, N> fallback, const std::string& where) {
+    if (!extension.Has(key)) return fallback;
+    const tinygltf::Value& value = extension.Get(key);
+    if (!value.IsArray() || value.ArrayLen() != N) gltf.fail(where + ": " + key + " needs " + std::to_string(N) + " numbers in 0..1");
+    std::array<float, N> factors{};
+    for (size_t i = 0; i < N; ++i) {
+        const tinygltf::Value& number = value.Get(static_cast<int>(i));
+        factors[i] = number.IsNumber() ? static_cast<float>(number.GetNumberAsDouble()) : -1.0f;
+        if (!(factors[i] >= 0.0f && factors[i] <= 1.0f)) {
+            gltf.fail(where + ": " + key + " needs " + std::to_string(N) + " numbers in 0..1");
+        }
+    }
+    return factors;
+}
+
+// KHR_materials_pbrSpecularGlossiness in place of the metallic-roughness parameters
+// (specular_glossiness.h): Kd, Ks and Pr from its factors, the diffuse texture as the colour
+// texture; returns the diffuse factor's alpha, which takes base colour alpha's part in MASK.
+float applySpecularGlossiness(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
+                              const std::string& name, Material& material) {
+    const std::string where = name + ": KHR_materials_pbrSpecularGlossiness";
+    const auto diffuse = unitFactors<4>(gltf, extension, "diffuseFactor", {1.0f, 1.0f, 1.0f, 1.0f}, where);
+    const auto specular = unitFactors<3>(gltf, extension, "specularFactor", {1.0f, 1.0f, 1.0f}, where);
+    const float glossiness = numberOf(gltf, extension, "glossinessFactor", 1.0, 0.0, 1.0, where);
+    const SpecularGlossiness model{{diffuse[0], diffuse[1], diffuse[2]}, {specular[0], specular[1], specular[2]}, glossiness};
+    const LayeredReflectance r = fromSpecularGlossiness(model.diffuse, model.specular);
+    material.diffuse = r.diffuse;
+    material.specular = r.specular;
+    material.roughness = 1.0f - glossiness;
+    MaterialTextures& maps = material.textures;
+    maps.colour = extensionTexture(gltf, textures, extension, "diffuseTexture", name, TextureEncoding::Colour);
+    // RGB sRGB, A (the glossiness) linear: the base colour's encoding.
+    maps.specularGlossiness =
+        extensionTexture(gltf, textures, extension, "specularGlossinessTexture", name, TextureEncoding::Colour);
+    maps.roughnessMetallic = nullptr;
+    if (material.hasReflectanceTextures()) material.specularGlossiness = model;
+    return diffuse[3];
 }
 
 // The numbers of `name` in a KHR_texture_transform object, else `otherwise`.
@@ -140,18 +196,29 @@ glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
     const tinygltf::Material& m = gltf.model.materials[index];
     const std::string name = "material '" + m.name + "' (" + std::to_string(index) + ")";
     const auto& pbr = m.pbrMetallicRoughness;
-    const std::array<std::pair<const char*, std::pair<int, const tinygltf::ExtensionMap*>>, 4> slots{{
-        {"baseColorTexture", {pbr.baseColorTexture.index, &pbr.baseColorTexture.extensions}},
-        {"metallicRoughnessTexture", {pbr.metallicRoughnessTexture.index, &pbr.metallicRoughnessTexture.extensions}},
-        {"emissiveTexture", {m.emissiveTexture.index, &m.emissiveTexture.extensions}},
-        {"normalTexture", {m.normalTexture.index, &m.normalTexture.extensions}},
-    }};
-    const char* first = nullptr;
+    // The textured slots the material reads: the specular-glossiness model's in place of the
+    // metallic-roughness ones, whose textures are then a fallback that is not read.
+    std::vector<std::pair<std::string, ExtensionTextureInfo>> slots;
+    const auto core = [&](const char* slot, const tinygltf::TextureInfo& info) {
+        slots.emplace_back(slot, ExtensionTextureInfo{info.index, info.texCoord, info.extensions});
+    };
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_pbrSpecularGlossiness")) {
+        for (const char* slot : {"diffuseTexture", "specularGlossinessTexture"}) {
+            slots.emplace_back(slot, extensionTextureInfo(gltf, *e, slot, name));
+        }
+    } else {
+        core("baseColorTexture", pbr.baseColorTexture);
+        core("metallicRoughnessTexture", pbr.metallicRoughnessTexture);
+    }
+    core("emissiveTexture", m.emissiveTexture);
+    slots.emplace_back("normalTexture", ExtensionTextureInfo{m.normalTexture.index, m.normalTexture.texCoord,
+                                                             m.normalTexture.extensions});
+    std::string first;
     glm::dmat3 transform(1.0);
-    for (const auto& [slot, reference] : slots) {
-        if (reference.first < 0) continue;
-        const glm::dmat3 own = transformOf(gltf, name + " " + slot, *reference.second);
-        if (!first) {
+    for (const auto& [slot, info] : slots) {
+        if (info.index < 0) continue;
+        const glm::dmat3 own = transformOf(gltf, name + " " + slot, info.extensions);
+        if (first.empty()) {
             first = slot;
             transform = own;
         } else if (own != transform) {
@@ -226,11 +293,18 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
                                                   static_cast<float>(pbr.roughnessFactor), emission, dielectricF0);
 
     MaterialTextures& maps = material.textures;
-    maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
-                            pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, TextureEncoding::Colour);
-    maps.roughnessMetallic =
-        textureOf(gltf, textures, name + " metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
-                  pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.extensions, TextureEncoding::Data);
+    // The alpha that base colour alpha is in MASK: baseColorFactor's, or the diffuse factor's.
+    double colourAlpha = pbr.baseColorFactor[3];
+    const tinygltf::Value* specularGlossiness = extensionOf(m, "KHR_materials_pbrSpecularGlossiness");
+    if (specularGlossiness) {
+        colourAlpha = applySpecularGlossiness(gltf, textures, *specularGlossiness, name, material);
+    } else {
+        maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
+                                pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, TextureEncoding::Colour);
+        maps.roughnessMetallic = textureOf(gltf, textures, name + " metallicRoughnessTexture",
+                                           pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                           pbr.metallicRoughnessTexture.extensions, TextureEncoding::Data);
+    }
     maps.emission = textureOf(gltf, textures, name + " emissiveTexture", m.emissiveTexture.index,
                               m.emissiveTexture.texCoord, m.emissiveTexture.extensions, TextureEncoding::Colour);
     maps.normal = textureOf(gltf, textures, name + " normalTexture", m.normalTexture.index, m.normalTexture.texCoord,
@@ -283,7 +357,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
             gltf.warnOnce(where + ": clearcoatNormalTexture is not applied (the coat takes the base's normal)");
         }
     }
-    if (material.hasReflectanceTextures()) {
+    if (material.hasReflectanceTextures() && !specularGlossiness) {
         material.metallicRoughness = MetallicRoughness{baseColor, metallic, dielectricF0, transmission};
     }
 
@@ -296,7 +370,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
         // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
         // without a texture the factor alone decides, through a one-texel coverage map.
-        const double factorAlpha = pbr.baseColorFactor[3];
+        const double factorAlpha = colourAlpha;
         maps.coverage = maps.colour ? maps.colour : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
         maps.coverageChannel = 3;
         maps.alphaCutoff = factorAlpha > 0.0 ? static_cast<float>(cutoff / factorAlpha)

@@ -21,7 +21,11 @@
 //                   wall (a rough thin wall transmits smooth: a warning);
 //   KHR_materials_clearcoat  a coat of index 1.5 over the material, factor x clearcoatTexture's R,
 //                   roughness x clearcoatRoughnessTexture's G (clearcoatNormalTexture is not
-//                   applied: a warning).
+//                   applied: a warning);
+//   KHR_materials_pbrSpecularGlossiness  in place of the metallic-roughness parameters, which are
+//                   then a fallback not read (specular_glossiness.h): diffuseFactor x
+//                   diffuseTexture (sRGB; its alpha as base colour's for MASK), specularFactor x
+//                   specularGlossinessTexture's RGB (sRGB), glossinessFactor x its A (linear).
 // doubleSided needs nothing: Strata reflects on both sides of every triangle. occlusionTexture is
 // not read: a path tracer finds occlusion itself. Only TEXCOORD_0 is read; a texture on another
 // set is a warning. KHR_texture_transform's offset, rotation and scale move the UVs of the
@@ -42,7 +46,8 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index);
 // KHR_texture_transform of the material's textures as a matrix on homogeneous glTF UVs (v down):
 // T * R * S, rotation counter-clockwise in UV space. Strata has one UV set per primitive, so the
 // material's textures share one transform: the first textured slot's (base colour, then
-// metallic-roughness, emissive, normal), with a warning when another slot's differs.
+// metallic-roughness, or specular-glossiness's diffuse and specular-glossiness; then emissive,
+// normal), with a warning when another slot's differs.
 glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index);
 
 // The material of a primitive without one ("Materials": base colour 1, metallic 1, roughness 1).

@@ -351,6 +351,71 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     CHECK_FALSE(mesh.materials[1].cutOut({0.5f, 0.5f}));
 }
 
+TEST_CASE("gltf: KHR_materials_pbrSpecularGlossiness onto Kd, Ks and Pr, in place of its fallback") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+    // Codes 255 and 0 decode to 1 and 0 exactly in sRGB; the glossiness alpha 51 is 0.2, linear.
+    model.doc["images"] = json::array({
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 255, 0, 255}))}},
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 51}))}},
+        {{"uri", "absent.png"}},
+    });
+    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}, {{"source", 2}}});
+    // The fallback's texture is missing: it is not read, so nothing warns of it.
+    const json fallback = {{"baseColorTexture", {{"index", 2}}}, {"metallicFactor", 0}};
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", fallback},
+         {"alphaMode", "MASK"},
+         {"extensions",
+          {{"KHR_materials_pbrSpecularGlossiness",
+            {{"diffuseFactor", {0.5, 0.6, 0.8, 0.2}}, {"specularFactor", {0.2, 0.4, 0.1}}, {"glossinessFactor", 0.75}}}}}},
+        {{"pbrMetallicRoughness", fallback},
+         {"extensions",
+          {{"KHR_materials_pbrSpecularGlossiness",
+            {{"diffuseTexture", {{"index", 0}}}, {"specularFactor", {0.5, 0.5, 0.5}},
+             {"specularGlossinessTexture", {{"index", 1}}}}}}}},
+    });
+    for (int m = 0; m < 2; ++m) {
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
+    }
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    CHECK(report.warnings.empty());
+    // Kd = diffuse (1 - max specular), Ks = specular, Pr = 1 - glossiness.
+    const Material& factors = mesh.materials[0];
+    checkApprox(factors.diffuse, glm::vec3(0.3f, 0.36f, 0.48f));
+    CHECK(factors.specular == glm::vec3(0.2f, 0.4f, 0.1f));
+    CHECK(factors.roughness == doctest::Approx(0.25));
+    CHECK_FALSE(factors.metallicRoughness);
+    // MASK reads the diffuse factor's alpha: 0.2 < 0.5.
+    CHECK(factors.cutOut({0.5f, 0.5f}));
+    // Textured: at the texel, diffuse (1, 1, 0), specular 0.5 x (1, 0, 1), glossiness 1 x 0.2,
+    // so Kd = (0.5, 0.5, 0), Ks = (0.5, 0, 0.5) and Pr 0.8, quantised to 13/16.
+    const Material& textured = mesh.materials[1];
+    REQUIRE(textured.textures.colour);
+    REQUIRE(textured.textures.specularGlossiness);
+    REQUIRE(textured.specularGlossiness);
+    Material expected;
+    expected.diffuse = glm::vec3(0.5f, 0.5f, 0.0f);
+    expected.specular = glm::vec3(0.5f, 0.0f, 0.5f);
+    expected.roughness = 13.0f / 16.0f;
+    const MaterialTable table({textured, expected});
+    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
+    for (const glm::vec3& wi : {glm::vec3(0.0f, 0.0f, 1.0f), glm::normalize(glm::vec3(-0.4f, 0.2f, 0.7f))}) {
+        const glm::vec3 atTexel = table.bsdf(0, {0.5f, 0.5f}).evaluate(wo, wi);
+        const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
+        for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
+    }
+    // A malformed factor is named.
+    model.doc["materials"][0]["extensions"]["KHR_materials_pbrSpecularGlossiness"]["specularFactor"] = {0.2, 0.4};
+    CHECK_THROWS_WITH_AS(parse(model.gltf()),
+                         "mem/model.gltf: material '' (0): KHR_materials_pbrSpecularGlossiness: specularFactor needs 3 "
+                         "numbers in 0..1",
+                         Error);
+}
+
 TEST_CASE("gltf: a camera ray through a MASK-ed texel sees what is behind it") {
     Model model;
     // Two unit squares facing +z: the front one at z = 1 textured left opaque, right cut out.
