@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
@@ -18,9 +19,14 @@ namespace strata {
 struct MetallicRoughness {
     glm::vec3 baseColor{1.0f};
     float metallic = 1.0f;
-    // A dielectric's reflectance at normal incidence: ((ior - 1) / (ior + 1))^2, times
-    // KHR_materials_specular's colour and factor.
-    glm::vec3 dielectricF0{0.04f};
+    // A dielectric's reflectance at normal incidence (KHR_materials_specular, "Implementation"):
+    // min(specularColour x the colour texel, 1) x specularFactor x the factor texel, where
+    // specularColour is ((ior - 1) / (ior + 1))^2 times specularColorFactor.
+    glm::vec3 specularColour{0.04f};
+    float specularFactor = 1.0f;
+    glm::vec3 dielectricF0(const glm::vec3& colourTexel = glm::vec3(1.0f), float factorTexel = 1.0f) const {
+        return glm::min(specularColour * colourTexel, glm::vec3(1.0f)) * (specularFactor * factorTexel);
+    }
     // KHR_materials_transmission's factor: the share of the dielectric part (1 - metallic) that
     // transmits.
     float transmission = 0.0f;
@@ -58,6 +64,10 @@ struct MaterialTextures {
     std::shared_ptr<const Texture> clearcoatRoughness;
     // RGB times the specular colour, A times the glossiness (glTF specularGlossinessTexture).
     std::shared_ptr<const Texture> specularGlossiness;
+    // KHR_materials_specular: A times specularFactor (specularTexture), RGB times
+    // specularColorFactor (specularColorTexture, sRGB).
+    std::shared_ptr<const Texture> specular;
+    std::shared_ptr<const Texture> specularColour;
 };
 
 struct Material {
@@ -93,7 +103,8 @@ struct Material {
     // Whether any texture changes the BSDF from hit to hit.
     bool hasReflectanceTextures() const {
         return textures.colour || textures.roughnessMetallic || textures.transmission || textures.clearcoat ||
-               textures.clearcoatRoughness || textures.specularGlossiness;
+               textures.clearcoatRoughness || textures.specularGlossiness || textures.specular ||
+               textures.specularColour;
     }
     // Whether the hit at `uv` is cut out (no surface there).
     bool cutOut(glm::vec2 uv) const {

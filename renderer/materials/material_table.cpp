@@ -31,14 +31,15 @@ glm::vec3 absorptionOf(const Material& m) {
 // glTF's through its metallic-roughness or specular-glossiness mapping), the textures' colour,
 // metallic and specular colour at the hit applied.
 LayeredReflectance reflectanceOf(const Material& m, const glm::vec3& colour, float metallicFactor,
-                                 const glm::vec3& specularColour) {
+                                 const glm::vec3& specularColour, float specularFactor) {
     if (m.specularGlossiness) {
         const SpecularGlossiness& sg = *m.specularGlossiness;
         return fromSpecularGlossiness(sg.diffuse * colour, sg.specular * specularColour);
     }
     if (!m.metallicRoughness) return {m.diffuse * colour, m.specular};
     const MetallicRoughness& mr = *m.metallicRoughness;
-    return fromMetallicRoughness(mr.baseColor * colour, mr.metallic * metallicFactor, mr.dielectricF0);
+    return fromMetallicRoughness(mr.baseColor * colour, mr.metallic * metallicFactor,
+                                 mr.dielectricF0(specularColour, specularFactor));
 }
 }  // namespace
 
@@ -148,7 +149,11 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
         p.roughness = static_cast<float>(std::lround(unitClamped(*texturedRoughness) * (kRoughnessLevels - 1))) /
                       (kRoughnessLevels - 1);
     }
-    const LayeredReflectance r = reflectanceOf(m, colour, metallic, specularColour);
+    // KHR_materials_specular's textures scale the dielectric's F0, as specularGlossiness's the F0.
+    float specularFactor = 1.0f;
+    if (m.textures.specular) specularFactor = unitClamped(m.textures.specular->lookup(uv).a);
+    if (m.textures.specularColour) specularColour = unitClamped(glm::vec3(m.textures.specularColour->lookup(uv)));
+    const LayeredReflectance r = reflectanceOf(m, colour, metallic, specularColour, specularFactor);
     p.diffuse = r.diffuse;
     p.specular = r.specular;
     if (m.metallicRoughness) {

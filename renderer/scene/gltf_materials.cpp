@@ -263,24 +263,21 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_ior")) {
         ior = numberOf(gltf, *e, "ior", 1.5, 1.0, 10.0, name + ": KHR_materials_ior");
     }
+    MetallicRoughness model{baseColor, metallic};
     // (In double: at ior 1.5 it rounds to the float 0.04 exactly, as the core model's constant.)
-    glm::vec3 dielectricF0(static_cast<float>(std::pow((ior - 1.0) / (ior + 1.0), 2.0)));
-    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_specular")) {
+    model.specularColour = glm::vec3(static_cast<float>(std::pow((ior - 1.0) / (ior + 1.0), 2.0)));
+    const tinygltf::Value* specular = extensionOf(m, "KHR_materials_specular");
+    if (specular) {
         const std::string where = name + ": KHR_materials_specular";
-        const float factor = numberOf(gltf, *e, "specularFactor", 1.0, 0.0, 1.0, where);
-        glm::vec3 colour(1.0f);
-        if (e->Has("specularColorFactor")) {
-            const tinygltf::Value& c = e->Get("specularColorFactor");
+        model.specularFactor = numberOf(gltf, *specular, "specularFactor", 1.0, 0.0, 1.0, where);
+        if (specular->Has("specularColorFactor")) {
+            const tinygltf::Value& c = specular->Get("specularColorFactor");
             if (!c.IsArray() || c.ArrayLen() != 3) gltf.fail(where + ": specularColorFactor needs 3 numbers");
             for (int i = 0; i < 3; ++i) {
                 const float v = c.Get(i).IsNumber() ? static_cast<float>(c.Get(i).GetNumberAsDouble()) : -1.0f;
                 if (!(v >= 0.0f) || !std::isfinite(v)) gltf.fail(where + ": specularColorFactor needs numbers >= 0");
-                colour[i] = v;
+                model.specularColour[i] *= v;
             }
-        }
-        dielectricF0 = glm::min(dielectricF0 * colour, glm::vec3(1.0f)) * factor;
-        if (e->Has("specularTexture") || e->Has("specularColorTexture")) {
-            gltf.warnOnce(where + ": its textures are not applied (the factors are)");
         }
     }
     // Checked as the float it becomes: a finite double such as 1e300 is infinite as a float.
@@ -290,7 +287,8 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         gltf.fail(name + ": emissiveStrength x emissiveFactor is beyond float range");
     }
     Material material = metallicRoughnessMaterial(m.name, baseColor, metallic,
-                                                  static_cast<float>(pbr.roughnessFactor), emission, dielectricF0);
+                                                  static_cast<float>(pbr.roughnessFactor), emission,
+                                                  model.dielectricF0());
 
     MaterialTextures& maps = material.textures;
     // The alpha that base colour alpha is in MASK: baseColorFactor's, or the diffuse factor's.
@@ -304,6 +302,12 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         maps.roughnessMetallic = textureOf(gltf, textures, name + " metallicRoughnessTexture",
                                            pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
                                            pbr.metallicRoughnessTexture.extensions, TextureEncoding::Data);
+        if (specular) {
+            // The factor in the texture's alpha (linear), the colour in its RGB (sRGB).
+            maps.specular = extensionTexture(gltf, textures, *specular, "specularTexture", name, TextureEncoding::Data);
+            maps.specularColour =
+                extensionTexture(gltf, textures, *specular, "specularColorTexture", name, TextureEncoding::Colour);
+        }
     }
     maps.emission = textureOf(gltf, textures, name + " emissiveTexture", m.emissiveTexture.index,
                               m.emissiveTexture.texCoord, m.emissiveTexture.extensions, TextureEncoding::Colour);
@@ -358,7 +362,8 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         }
     }
     if (material.hasReflectanceTextures() && !specularGlossiness) {
-        material.metallicRoughness = MetallicRoughness{baseColor, metallic, dielectricF0, transmission};
+        model.transmission = transmission;
+        material.metallicRoughness = model;
     }
 
     double cutoff = m.alphaCutoff;

@@ -11,8 +11,9 @@
 //   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND is taken
 //                   as MASK at 0.5 (a warning), OPAQUE ignores alpha;
 //   KHR_materials_ior, KHR_materials_specular  the dielectric reflectance at normal incidence,
-//                   ((ior - 1) / (ior + 1))^2 x specularColorFactor (at most 1) x specularFactor
-//                   (their textures are not applied: a warning), and the index of refraction;
+//                   ((ior - 1) / (ior + 1))^2 x specularColorFactor x specularColorTexture's RGB
+//                   (sRGB), at most 1, x specularFactor x specularTexture's A (linear), and the
+//                   index of refraction;
 //   KHR_materials_transmission  factor x transmissionTexture's R of the dielectric part
 //                   (1 - metallic) is a dielectric of that index and the material's roughness,
 //                   tinted by the base colour; metallic 1 at roughness 0 is a perfect mirror;

@@ -416,6 +416,48 @@ TEST_CASE("gltf: KHR_materials_pbrSpecularGlossiness onto Kd, Ks and Pr, in plac
                          Error);
 }
 
+TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at each hit") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["extensionsUsed"] = {"KHR_materials_specular"};
+    // The factor texel: alpha 51 = 0.2 (linear); the colour texel: 255, 0, 255 = 1, 0, 1 (sRGB).
+    model.doc["images"] = json::array({
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {0, 0, 0, 51}))}},
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}},
+    });
+    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
+         {"extensions",
+          {{"KHR_materials_specular",
+            {{"specularFactor", 0.5}, {"specularColorFactor", {30, 1, 1}}, {"specularTexture", {{"index", 0}}},
+             {"specularColorTexture", {{"index", 1}}}}}}}},
+    });
+    model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    CHECK(report.warnings.empty());
+    const Material& m = mesh.materials[0];
+    REQUIRE(m.textures.specular);
+    REQUIRE(m.textures.specularColour);
+    REQUIRE(m.metallicRoughness);
+    // Untextured: min(0.04 x (30, 1, 1), 1) x 0.5.
+    checkApprox(m.specular, glm::vec3(0.5f, 0.02f, 0.02f));
+    // At the texel: min(0.04 x (30, 1, 1) x (1, 0, 1), 1) x 0.5 x 0.2 = (0.1, 0, 0.004).
+    Material expected;
+    expected.diffuse = glm::vec3(0.5f);
+    expected.specular = glm::vec3(0.1f, 0.0f, 0.004f);
+    expected.roughness = 0.5f;
+    const MaterialTable table({m, expected});
+    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
+    for (const glm::vec3& wi : {glm::vec3(0.0f, 0.0f, 1.0f), glm::normalize(glm::vec3(-0.6f, 0.2f, 0.5f))}) {
+        const glm::vec3 atTexel = table.bsdf(0, {0.5f, 0.5f}).evaluate(wo, wi);
+        const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
+        for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
+    }
+}
+
 TEST_CASE("gltf: a camera ray through a MASK-ed texel sees what is behind it") {
     Model model;
     // Two unit squares facing +z: the front one at z = 1 textured left opaque, right cut out.
