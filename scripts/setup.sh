@@ -13,7 +13,7 @@ build_dir=${1:-build}
 packages=(
   cmake g++ ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
-  libopenexr-dev libjpeg-dev libstb-dev doctest-dev libdraco-dev libmeshoptimizer-dev
+  libopenexr-dev libjpeg-dev libwebp-dev libstb-dev doctest-dev libdraco-dev libmeshoptimizer-dev
   libglfw3-dev libimgui-dev libepoxy-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev
   libopenmpi-dev openmpi-bin
   python3-glad xvfb xauth gnuplot-nox clang libclang-rt-14-dev

@@ -8,6 +8,7 @@
 #include "io/exr_header.h"
 #include "io/image_io.h"
 #include "io/jpeg_image.h"
+#include "io/webp_image.h"
 #include "util/error.h"
 
 namespace strata {
@@ -90,10 +91,6 @@ std::optional<GifFrame> firstGifFrame(std::string_view gif) {
     return std::nullopt;
 }
 
-Error cannotDecode(const std::string& name, const std::string& reason) {
-    return Error(name + ": cannot decode the texture (" + reason + ")");
-}
-
 Texture decodeExr(std::string_view bytes, const std::string& name) {
     const Image image = readExr(bytes, name);
     std::vector<float> texels;
@@ -104,20 +101,25 @@ Texture decodeExr(std::string_view bytes, const std::string& name) {
 
 }  // namespace
 
+Error cannotDecodeTexture(const std::string& name, const std::string& reason) {
+    return Error(name + ": cannot decode the texture (" + reason + ")");
+}
+
 TextureSize readTextureHeader(std::string_view bytes, const std::string& name) {
     // readExrHeader's and readJpegHeader's messages name the file already.
     if (isExr(bytes)) return readExrHeader(bytes, name);
     if (isJpeg(bytes)) return readJpegHeader(bytes, name);
-    if (bytes.empty()) throw cannotDecode(name, "the file is empty");
-    if (bytes.size() > static_cast<size_t>(INT32_MAX)) throw cannotDecode(name, "larger than 2 GB");
+    if (isWebp(bytes)) return readWebpHeader(bytes, name);
+    if (bytes.empty()) throw cannotDecodeTexture(name, "the file is empty");
+    if (bytes.size() > static_cast<size_t>(INT32_MAX)) throw cannotDecodeTexture(name, "larger than 2 GB");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     if (stbi_is_hdr_from_memory(data, size)) {
-        throw cannotDecode(name, "Radiance HDR textures are not read; use EXR");
+        throw cannotDecodeTexture(name, "Radiance HDR textures are not read; use EXR");
     }
     TextureSize texels;
     if (!stbi_info_from_memory(data, size, &texels.width, &texels.height, &texels.channels)) {
-        throw cannotDecode(name, stbi_failure_reason());
+        throw cannotDecodeTexture(name, stbi_failure_reason());
     }
     requirePlausibleImageSize(texels.width, texels.height, bytes.size(), name);
     if (isPng(bytes) && pngHasTransparentColour(bytes)) ++texels.channels;
@@ -138,6 +140,9 @@ Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEn
         return Texture(texels.width, texels.height, texels.channels, decodeJpeg(bytes, name, warnings),
                        encoding);
     }
+    if (isWebp(bytes)) {
+        return Texture(texels.width, texels.height, texels.channels, decodeWebp(bytes, name), encoding);
+    }
     if (isGif(bytes)) {
         const std::optional<GifFrame> frame = firstGifFrame(bytes);
         if (frame && frame->truncated) {
@@ -152,8 +157,8 @@ Texture decodeTexture(std::string_view bytes, const std::string& name, TextureEn
         stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
                               &width, &height, &channels, texels.channels),
         stbi_image_free);
-    if (!pixels) throw cannotDecode(name, stbi_failure_reason());
-    if (width != texels.width || height != texels.height) throw cannotDecode(name, "its size reads two ways");
+    if (!pixels) throw cannotDecodeTexture(name, stbi_failure_reason());
+    if (width != texels.width || height != texels.height) throw cannotDecodeTexture(name, "its size reads two ways");
     return Texture(width, height, texels.channels,
                    std::vector<uint8_t>(pixels.get(), pixels.get() + texels.bytes()), encoding);
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Texture files decoded into textures (textures/texture.h): JPEG through libjpeg
-// (io/jpeg_image.h), PNG, TGA, BMP, GIF (its first frame), PSD and PNM through stb_image, all at
-// 8 bits a channel and kept so; EXR through OpenEXR (io/image_io.h's reader) as floats.
+// (io/jpeg_image.h), WebP through libwebp (io/webp_image.h), PNG, TGA, BMP, GIF (its first
+// frame), PSD and PNM through stb_image, all at 8 bits a channel and kept so; EXR through OpenEXR
+// (io/image_io.h's reader) as floats.
 //
 // 8-bit colour textures (base colour, diffuse, emission) hold sRGB-encoded values, decoded at
 // lookup with the exact sRGB curve (srgbDecodingTable); their alpha channel, and every channel of
@@ -17,8 +18,12 @@
 #include <vector>
 
 #include "textures/texture.h"
+#include "util/error.h"
 
 namespace strata {
+
+// The error "NAME: cannot decode the texture (REASON)" of a texture file that no decoder reads.
+Error cannotDecodeTexture(const std::string& name, const std::string& reason);
 
 // The size of the texture decodeTexture makes of `bytes`, from the file's header and structure
 // alone. Throws strata::Error "NAME: ..." for bytes no decoder reads, a size beyond 2^28 texels,

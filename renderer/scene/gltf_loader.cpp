@@ -31,13 +31,20 @@ namespace {
 // extensionsRequired means the file cannot be rendered as its author meant (glTF 2.0, "Specifying
 // Extensions"), and one in extensionsUsed only is a warning. The compressions are decoded
 // (gltf_meshopt.h, gltf_draco.h) before the model is read.
-constexpr std::array<std::string_view, 13> kImplementedExtensions{
-    "EXT_meshopt_compression",         "KHR_draco_mesh_compression",
-    "KHR_lights_punctual",             "KHR_materials_clearcoat",
-    "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_pbrSpecularGlossiness", "KHR_materials_specular",
-    "KHR_materials_transmission",      "KHR_materials_volume",
-    "KHR_mesh_quantization",           "KHR_meshopt_compression",
+constexpr std::array<std::string_view, 14> kImplementedExtensions{
+    "EXT_meshopt_compression",
+    "EXT_texture_webp",
+    "KHR_draco_mesh_compression",
+    "KHR_lights_punctual",
+    "KHR_materials_clearcoat",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",
+    "KHR_materials_pbrSpecularGlossiness",
+    "KHR_materials_specular",
+    "KHR_materials_transmission",
+    "KHR_materials_volume",
+    "KHR_mesh_quantization",
+    "KHR_meshopt_compression",
     "KHR_texture_transform"};
 
 bool implemented(const std::string& extension) {

@@ -48,12 +48,22 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
         gltf.warnOnce(where + " uses TEXCOORD_" + std::to_string(texCoord) + ", which Strata does not read; ignored");
         return nullptr;
     }
-    if (texture.source < 0) {
+    // EXT_texture_webp names a WebP image in place of the core source, which is then a fallback
+    // (or absent) for readers without WebP.
+    int imageIndex = texture.source;
+    if (const auto webp = texture.extensions.find("EXT_texture_webp"); webp != texture.extensions.end()) {
+        const tinygltf::Value& source = webp->second.Get("source");
+        if (!source.IsInt()) {
+            gltf.fail(where + ": texture " + std::to_string(textureIndex) + ": EXT_texture_webp needs a source");
+        }
+        imageIndex = source.GetNumberAsInt();
+    }
+    if (imageIndex < 0) {
         gltf.warnOnce(where + ": texture " + std::to_string(textureIndex) + " has no image it can read; ignored");
         return nullptr;
     }
-    const tinygltf::Image& image = gltf.element(gltf.model.images, texture.source, where + ": image");
-    const auto source = static_cast<size_t>(texture.source);
+    const tinygltf::Image& image = gltf.element(gltf.model.images, imageIndex, where + ": image");
+    const auto source = static_cast<size_t>(imageIndex);
     const std::string name = image.uri.empty() || image.uri.rfind("data:", 0) == 0
                                  ? "image " + std::to_string(source)
                                  : image.uri;

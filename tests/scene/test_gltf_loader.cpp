@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
+#include <webp/encode.h>
 
 #include "io/image_io.h"
 #include "materials/material_table.h"
@@ -456,6 +457,47 @@ TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at 
         const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
         for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
     }
+}
+
+TEST_CASE("gltf: EXT_texture_webp's source is read in place of the core one, even where it is required") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["extensionsUsed"] = {"EXT_texture_webp"};
+    model.doc["extensionsRequired"] = {"EXT_texture_webp"};
+    // One lossless texel, code 255 0 255: sRGB 1 0 1.
+    const std::vector<uint8_t> magenta{255, 0, 255};
+    uint8_t* webp = nullptr;
+    const size_t size = WebPEncodeLosslessRGB(magenta.data(), 1, 1, 3, &webp);
+    REQUIRE(size > 0);
+    const std::string webpBytes(reinterpret_cast<const char*>(webp), size);
+    WebPFree(webp);
+    // In a buffer view, as a .glb holds it (tinygltf decodes no data: URI of WebP).
+    model.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", model.bin.size()}, {"byteLength", size}});
+    model.bin += webpBytes;
+    model.bin.resize((model.bin.size() + 3) / 4 * 4, '\0');
+    model.doc["images"] = json::array({{{"uri", "fallback-absent.png"}},
+                                       {{"bufferView", model.doc["bufferViews"].size() - 1}, {"mimeType", "image/webp"}}});
+    model.doc["textures"] = json::array({{{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}},
+                                         {{"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}});
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}},
+        {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}, {"metallicFactor", 0}}}},
+    });
+    for (int m = 0; m < 2; ++m) {
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
+    }
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    CHECK(report.warnings.empty());
+    for (const Material& m : mesh.materials) {
+        REQUIRE(m.textures.colour);
+        CHECK(glm::vec3(m.textures.colour->lookup({0.5f, 0.5f})) == glm::vec3(1.0f, 0.0f, 1.0f));
+    }
+    model.doc["textures"][1]["extensions"]["EXT_texture_webp"] = json::object();
+    CHECK_THROWS_WITH_AS(parse(model.gltf()),
+                         "mem/model.gltf: material '' (1) baseColorTexture: texture 1: EXT_texture_webp needs a source",
+                         Error);
 }
 
 TEST_CASE("gltf: a camera ray through a MASK-ed texel sees what is behind it") {
