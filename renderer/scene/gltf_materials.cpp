@@ -130,14 +130,13 @@ std::array<float, N> unitFactors(const GltfModel& gltf, const tinygltf::Value& e
                                  std::array<float, N> fallback, const std::string& where) {
     if (!extension.Has(key)) return fallback;
     const tinygltf::Value& value = extension.Get(key);
-    if (!value.IsArray() || value.ArrayLen() != N) gltf.fail(where + ": " + key + " needs " + std::to_string(N) + " numbers in 0..1");
+    const std::string malformed = where + ": " + key + " needs " + std::to_string(N) + " numbers in 0..1";
+    if (!value.IsArray() || value.ArrayLen() != N) gltf.fail(malformed);
     std::array<float, N> factors{};
     for (size_t i = 0; i < N; ++i) {
         const tinygltf::Value& number = value.Get(static_cast<int>(i));
         factors[i] = number.IsNumber() ? static_cast<float>(number.GetNumberAsDouble()) : -1.0f;
-        if (!(factors[i] >= 0.0f && factors[i] <= 1.0f)) {
-            gltf.fail(where + ": " + key + " needs " + std::to_string(N) + " numbers in 0..1");
-        }
+        if (!(factors[i] >= 0.0f && factors[i] <= 1.0f)) gltf.fail(malformed);
     }
     return factors;
 }
@@ -151,7 +150,8 @@ float applySpecularGlossiness(GltfModel& gltf, SceneTextures& textures, const ti
     const auto diffuse = unitFactors<4>(gltf, extension, "diffuseFactor", {1.0f, 1.0f, 1.0f, 1.0f}, where);
     const auto specular = unitFactors<3>(gltf, extension, "specularFactor", {1.0f, 1.0f, 1.0f}, where);
     const float glossiness = numberOf(gltf, extension, "glossinessFactor", 1.0, 0.0, 1.0, where);
-    const SpecularGlossiness model{{diffuse[0], diffuse[1], diffuse[2]}, {specular[0], specular[1], specular[2]}, glossiness};
+    const SpecularGlossiness model{
+        {diffuse[0], diffuse[1], diffuse[2]}, {specular[0], specular[1], specular[2]}, glossiness};
     const LayeredReflectance r = fromSpecularGlossiness(model.diffuse, model.specular);
     material.diffuse = r.diffuse;
     material.specular = r.specular;
@@ -161,7 +161,6 @@ float applySpecularGlossiness(GltfModel& gltf, SceneTextures& textures, const ti
     // RGB sRGB, A (the glossiness) linear: the base colour's encoding.
     maps.specularGlossiness =
         extensionTexture(gltf, textures, extension, "specularGlossinessTexture", name, TextureEncoding::Colour);
-    maps.roughnessMetallic = nullptr;
     if (material.hasReflectanceTextures()) material.specularGlossiness = model;
     return diffuse[3];
 }

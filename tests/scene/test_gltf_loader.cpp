@@ -289,6 +289,18 @@ TEST_CASE("gltf: transmission, ior, volume, specular and clearcoat onto the diel
     CHECK(unread == 1);
 }
 
+// The BSDF of the textured material at `uv` is that of the untextured `expected`: the same values
+// in two pairs of directions.
+void checkSameBsdf(const Material& textured, glm::vec2 uv, const Material& expected) {
+    const MaterialTable table({textured, expected});
+    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
+    for (const glm::vec3& wi : {glm::vec3(0.0f, 0.0f, 1.0f), glm::normalize(glm::vec3(-0.6f, 0.2f, 0.5f))}) {
+        const glm::vec3 atTexel = table.bsdf(0, uv).evaluate(wo, wi);
+        const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
+        for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
+    }
+}
+
 // A PNG of 8-bit RGBA pixels in memory.
 std::string rgbaPng(int width, int height, const std::vector<unsigned char>& pixels) {
     std::string out;
@@ -402,13 +414,7 @@ TEST_CASE("gltf: KHR_materials_pbrSpecularGlossiness onto Kd, Ks and Pr, in plac
     expected.diffuse = glm::vec3(0.5f, 0.5f, 0.0f);
     expected.specular = glm::vec3(0.5f, 0.0f, 0.5f);
     expected.roughness = 13.0f / 16.0f;
-    const MaterialTable table({textured, expected});
-    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
-    for (const glm::vec3& wi : {glm::vec3(0.0f, 0.0f, 1.0f), glm::normalize(glm::vec3(-0.4f, 0.2f, 0.7f))}) {
-        const glm::vec3 atTexel = table.bsdf(0, {0.5f, 0.5f}).evaluate(wo, wi);
-        const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
-        for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
-    }
+    checkSameBsdf(textured, {0.5f, 0.5f}, expected);
     // A malformed factor is named.
     model.doc["materials"][0]["extensions"]["KHR_materials_pbrSpecularGlossiness"]["specularFactor"] = {0.2, 0.4};
     CHECK_THROWS_WITH_AS(parse(model.gltf()),
@@ -450,13 +456,7 @@ TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at 
     expected.diffuse = glm::vec3(0.5f);
     expected.specular = glm::vec3(0.1f, 0.0f, 0.004f);
     expected.roughness = 0.5f;
-    const MaterialTable table({m, expected});
-    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 0.9f));
-    for (const glm::vec3& wi : {glm::vec3(0.0f, 0.0f, 1.0f), glm::normalize(glm::vec3(-0.6f, 0.2f, 0.5f))}) {
-        const glm::vec3 atTexel = table.bsdf(0, {0.5f, 0.5f}).evaluate(wo, wi);
-        const glm::vec3 constant = table.bsdf(1).evaluate(wo, wi);
-        for (int c = 0; c < 3; ++c) CHECK(atTexel[c] == doctest::Approx(constant[c]).epsilon(1e-5));
-    }
+    checkSameBsdf(m, {0.5f, 0.5f}, expected);
 }
 
 TEST_CASE("gltf: EXT_texture_webp's source is read in place of the core one, even where it is required") {
