@@ -508,9 +508,13 @@ void ViewerPanel::errorPlots(const WorkerSnapshot& snapshot, const ViewerSetting
         const double ratio = left.back().error / right.back().error;
         ImGui::Text("error left / right = %.3f  (variance ratio %.2f)", ratio, ratio * ratio);
     }
-    drawErrorPlot("##error_vs_spp", ErrorAxis::Spp, series, 100.0f);
+    // Two plots of 100 px where the panel has room, shorter (down to 60 px) where the window
+    // would cut them off.
+    const float room = ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y;
+    const float height = std::clamp(room / 2.0f, 60.0f, 100.0f);
+    drawErrorPlot("##error_vs_spp", ErrorAxis::Spp, series, height);
     remember("error vs spp", false);
-    drawErrorPlot("##error_vs_seconds", ErrorAxis::Seconds, series, 100.0f);
+    drawErrorPlot("##error_vs_seconds", ErrorAxis::Seconds, series, height);
     remember("error vs seconds", false);
 }
 
