@@ -109,7 +109,7 @@ std::vector<double> accessorValues(const GltfModel& gltf, int index, AccessorUse
         for (size_t t = 1; t < types.size(); ++t) wanted += std::string(" or ") + typeName(types[t]);
         gltf.fail(what + " is not a " + wanted);
     }
-    const size_t components = accessor.type == TINYGLTF_TYPE_SCALAR ? 1 : static_cast<size_t>(accessor.type);
+    const auto components = static_cast<size_t>(tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type)));
     if (!allowed(use, accessor.componentType, accessor.normalized)) {
         gltf.fail(what + " has component type " + std::to_string(accessor.componentType) +
              (accessor.normalized ? " (normalized)" : "") + ", which glTF does not allow for it");

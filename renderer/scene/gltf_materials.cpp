@@ -118,8 +118,9 @@ ExtensionTextureInfo extensionTextureInfo(const GltfModel& gltf, const tinygltf:
 }
 
 // The texture an extension's textureInfo `key` names, as textureOf reads a core one.
-std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures, const tinygltf::Value& extension,
-                                                const std::string& key, const std::string& where, TextureEncoding encoding) {
+std::shared_ptr<const Texture> extensionTexture(GltfModel& gltf, SceneTextures& textures,
+                                                const tinygltf::Value& extension, const std::string& key,
+                                                const std::string& where, TextureEncoding encoding) {
     const ExtensionTextureInfo info = extensionTextureInfo(gltf, extension, key, where);
     return textureOf(gltf, textures, where + " " + key, info.index, info.texCoord, info.extensions, encoding);
 }
@@ -208,7 +209,7 @@ glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
     // The textured slots the material reads: the specular-glossiness model's in place of the
     // metallic-roughness ones, whose textures are then a fallback that is not read.
     std::vector<std::pair<std::string, ExtensionTextureInfo>> slots;
-    const auto core = [&](const char* slot, const tinygltf::TextureInfo& info) {
+    const auto core = [&](const char* slot, const auto& info) {  // a TextureInfo or NormalTextureInfo
         slots.emplace_back(slot, ExtensionTextureInfo{info.index, info.texCoord, info.extensions});
     };
     if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_pbrSpecularGlossiness")) {
@@ -220,8 +221,7 @@ glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
         core("metallicRoughnessTexture", pbr.metallicRoughnessTexture);
     }
     core("emissiveTexture", m.emissiveTexture);
-    slots.emplace_back("normalTexture", ExtensionTextureInfo{m.normalTexture.index, m.normalTexture.texCoord,
-                                                             m.normalTexture.extensions});
+    core("normalTexture", m.normalTexture);
     std::string first;
     glm::dmat3 transform(1.0);
     for (const auto& [slot, info] : slots) {

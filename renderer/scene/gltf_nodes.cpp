@@ -363,7 +363,8 @@ private:
         size_t colourComponents = 0;
         if (const auto colour = primitive.attributes.find("COLOR_0"); colour != primitive.attributes.end()) {
             colours = accessorValues(gltf_, colour->second, AccessorUse::Colour, where);
-            colourComponents = gltf_.model.accessors[static_cast<size_t>(colour->second)].type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+            const int type = gltf_.model.accessors[static_cast<size_t>(colour->second)].type;
+            colourComponents = static_cast<size_t>(tinygltf::GetNumComponentsInType(static_cast<uint32_t>(type)));
             if (colours.size() / colourComponents != vertexCount) {
                 fail(where + ": COLOR_0 has " + std::to_string(colours.size() / colourComponents) +
                      " elements, POSITION " + std::to_string(vertexCount));
