@@ -14,6 +14,7 @@ std::vector<int> typesOf(AccessorUse use) {
         case AccessorUse::Index: return {TINYGLTF_TYPE_SCALAR};
         case AccessorUse::TexCoord: return {TINYGLTF_TYPE_VEC2};
         case AccessorUse::Colour: return {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+        case AccessorUse::InstanceRotation: return {TINYGLTF_TYPE_VEC4};
         default: return {TINYGLTF_TYPE_VEC3};
     }
 }
@@ -34,6 +35,9 @@ const char* nameOf(AccessorUse use) {
         case AccessorUse::TexCoord: return "TEXCOORD_0";
         case AccessorUse::Colour: return "COLOR_0";
         case AccessorUse::Index: return "indices";
+        case AccessorUse::InstanceTranslation: return "TRANSLATION";
+        case AccessorUse::InstanceRotation: return "ROTATION";
+        case AccessorUse::InstanceScale: return "SCALE";
     }
     return "";
 }
@@ -45,6 +49,7 @@ bool allowed(AccessorUse use, int componentType, bool normalized) {
                                                                   : componentType >= TINYGLTF_COMPONENT_TYPE_BYTE &&
                                                                         componentType <= TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         case AccessorUse::Normal:
+        case AccessorUse::InstanceRotation:
             return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
                        ? !normalized
                        : normalized && (componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
@@ -59,6 +64,13 @@ bool allowed(AccessorUse use, int componentType, bool normalized) {
             return !normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                    componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
                                    componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+        // EXT_mesh_gpu_instancing: float, or with KHR_mesh_quantization signed bytes and shorts,
+        // normalized or not.
+        case AccessorUse::InstanceTranslation:
+        case AccessorUse::InstanceScale:
+            return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? !normalized
+                                                                  : componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                                                        componentType == TINYGLTF_COMPONENT_TYPE_SHORT;
     }
     return false;
 }

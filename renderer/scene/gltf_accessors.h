@@ -11,8 +11,9 @@
 namespace strata {
 
 // What an accessor holds for Strata: POSITION and NORMAL are VEC3, TEXCOORD_0 VEC2, COLOR_0 VEC3
-// or VEC4 (RGB or RGBA), indices SCALAR.
-enum class AccessorUse { Position, Normal, TexCoord, Colour, Index };
+// or VEC4 (RGB or RGBA), indices SCALAR; EXT_mesh_gpu_instancing's TRANSLATION and SCALE are VEC3,
+// its ROTATION a VEC4 quaternion (x, y, z, w).
+enum class AccessorUse { Position, Normal, TexCoord, Colour, Index, InstanceTranslation, InstanceRotation, InstanceScale };
 
 // The accessor's elements, their components one after another (3 or 4 per COLOR_0 element, as its
 // type says; a normalized integer mapped onto [0, 1] or [-1, 1]); throws strata::Error naming

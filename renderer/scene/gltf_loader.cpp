@@ -31,7 +31,8 @@ namespace {
 // extensionsRequired means the file cannot be rendered as its author meant (glTF 2.0, "Specifying
 // Extensions"), and one in extensionsUsed only is a warning. The compressions are decoded
 // (gltf_meshopt.h, gltf_draco.h) before the model is read.
-constexpr std::array<std::string_view, 14> kImplementedExtensions{
+constexpr std::array<std::string_view, 15> kImplementedExtensions{
+    "EXT_mesh_gpu_instancing",
     "EXT_meshopt_compression",
     "EXT_texture_webp",
     "KHR_draco_mesh_compression",

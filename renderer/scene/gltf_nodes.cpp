@@ -24,6 +24,17 @@
 namespace strata {
 namespace {
 
+// Counts that a file's claims can make as large as they like: held at the largest count rather
+// than wrapped around, so that the budget sees them.
+uint64_t saturatingAdd(uint64_t a, uint64_t b) {
+    uint64_t sum;
+    return __builtin_add_overflow(a, b, &sum) ? UINT64_MAX : sum;
+}
+uint64_t saturatingProduct(uint64_t a, uint64_t b) {
+    uint64_t product;
+    return __builtin_mul_overflow(a, b, &product) ? UINT64_MAX : product;
+}
+
 bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 bool isFinite(const glm::dmat4& m) {
@@ -53,30 +64,80 @@ std::vector<int> rootNodes(const GltfModel& gltf) {
     return roots;
 }
 
-// glTF 2.0, "Transformations": a node's matrix, else T * R * S (rotation a unit quaternion
-// x, y, z, w).
+// glTF 2.0, "Transformations": T * R * S, the rotation a quaternion (x, y, z, w) normalised;
+// nothing where it has no length.
+std::optional<glm::dmat4> composeTrs(const glm::dvec3& translation, const glm::dquat& rotation, const glm::dvec3& scale) {
+    if (!(glm::length(rotation) > 0.0)) return std::nullopt;
+    return glm::scale(glm::translate(glm::dmat4(1.0), translation) * glm::mat4_cast(glm::normalize(rotation)), scale);
+}
+
+// glTF 2.0, "Transformations": a node's matrix, else T * R * S.
 glm::dmat4 localTransform(const GltfModel& gltf, const tinygltf::Node& node, int index) {
     const std::string name = "node " + std::to_string(index);
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) gltf.fail(name + ": matrix needs 16 numbers");
         return glm::make_mat4(node.matrix.data());  // column-major, as glm's
     }
-    glm::dmat4 transform(1.0);
+    glm::dvec3 translation(0.0);
+    glm::dquat rotation(1.0, 0.0, 0.0, 0.0);
+    glm::dvec3 scale(1.0);
     if (!node.translation.empty()) {
         if (node.translation.size() != 3) gltf.fail(name + ": translation needs 3 numbers");
-        transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+        translation = glm::make_vec3(node.translation.data());
     }
     if (!node.rotation.empty()) {
         if (node.rotation.size() != 4) gltf.fail(name + ": rotation needs 4 numbers");
-        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-        if (!(glm::length(q) > 0.0)) gltf.fail(name + ": rotation is not a unit quaternion");
-        transform *= glm::mat4_cast(glm::normalize(q));
+        rotation = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
     }
     if (!node.scale.empty()) {
         if (node.scale.size() != 3) gltf.fail(name + ": scale needs 3 numbers");
-        transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+        scale = glm::make_vec3(node.scale.data());
     }
-    return transform;
+    const auto transform = composeTrs(translation, rotation, scale);
+    if (!transform) gltf.fail(name + ": rotation is not a unit quaternion");
+    return *transform;
+}
+
+// EXT_mesh_gpu_instancing on a node: its mesh is drawn once per instance, at the node's world
+// transform times the instance's T * R * S, and not at the node itself. The attributes' accessors
+// (-1: absent, the identity's part) and the instances' count, which all of them share.
+struct GpuInstances {
+    int translation = -1;
+    int rotation = -1;
+    int scale = -1;
+    size_t count = 0;
+};
+
+std::optional<GpuInstances> gpuInstancesOf(GltfModel& gltf, const tinygltf::Node& node, int index) {
+    const auto extension = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (extension == node.extensions.end()) return std::nullopt;
+    const std::string name = "node " + std::to_string(index) + ": EXT_mesh_gpu_instancing";
+    if (node.mesh < 0) {
+        gltf.warnOnce("EXT_mesh_gpu_instancing on a node without a mesh places nothing; ignored");
+        return std::nullopt;
+    }
+    // tinygltf reads an empty object as no value, as it reads a missing one: both have no accessor.
+    const tinygltf::Value& attributes = extension->second.Get("attributes");
+    if (!attributes.IsObject() && attributes.Type() != tinygltf::NULL_TYPE) gltf.fail(name + " needs an attributes object");
+    GpuInstances instances;
+    std::optional<std::pair<const char*, size_t>> counted;  // the first accessor's name and count
+    for (const auto& [attribute, accessor] : {std::pair{"TRANSLATION", &instances.translation},
+                                              std::pair{"ROTATION", &instances.rotation},
+                                              std::pair{"SCALE", &instances.scale}}) {
+        if (!attributes.Has(attribute)) continue;
+        const tinygltf::Value& value = attributes.Get(attribute);
+        if (!value.IsInt()) gltf.fail(name + ": " + attribute + " is not an accessor index");
+        *accessor = value.GetNumberAsInt();
+        const size_t count = gltf.element(gltf.model.accessors, *accessor, name + ": " + attribute + " accessor").count;
+        if (counted && count != counted->second) {
+            gltf.fail(name + ": " + attribute + " has " + std::to_string(count) + " elements, " + counted->first +
+                      " " + std::to_string(counted->second) + "; every attribute needs one per instance");
+        }
+        counted = {attribute, count};
+    }
+    if (!counted) gltf.fail(name + " has no TRANSLATION, ROTATION or SCALE accessor");
+    instances.count = counted->second;
+    return instances;
 }
 
 // What makes two of a file's primitives the same geometry: their POSITION, NORMAL, TEXCOORD_0
@@ -92,12 +153,16 @@ PrimitiveKey keyOf(const tinygltf::Primitive& primitive) {
             primitive.indices, primitive.mode, primitive.material};
 }
 
-// A node with a mesh, at its world transform: a use of each of the mesh's primitives. Kept per
-// node, not per use, so that a small file of many primitives on many nodes costs no more memory
-// here than its nodes do in tinygltf before the budget has been checked.
+// A node with a mesh, at its world transform: a use of each of the mesh's primitives, or with
+// GPU instances one per instance. Kept per node, not per use, so that a small file of many
+// primitives on many nodes, or of many instances, costs no more memory here than its nodes do in
+// tinygltf before the budget has been checked.
 struct MeshNode {
     int mesh;
     glm::dmat4 world;
+    std::optional<GpuInstances> instances;
+
+    size_t useCount() const { return instances ? instances->count : 1; }
 };
 
 // The scene's nodes visited once each, their camera and lights taken, their meshes' primitives
@@ -163,9 +228,10 @@ private:
             visited[static_cast<size_t>(index)] = true;
             const glm::dmat4 world = parent * localTransform(gltf_, node, index);
             if (!isFinite(world)) fail("node " + std::to_string(index) + " has a non-finite transform");
+            std::optional<GpuInstances> instances = gpuInstancesOf(gltf_, node, index);
             if (node.mesh >= 0) {
                 element(gltf_.model.meshes, node.mesh, "mesh");
-                meshNodes_.push_back({node.mesh, world});
+                meshNodes_.push_back({node.mesh, world, instances});
             }
             if (node.camera >= 0) takeGltfCamera(gltf_, node.camera, world, parsed_.camera);
             if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
@@ -246,35 +312,72 @@ private:
                emitsLight(parsed_.mesh.materials[static_cast<size_t>(m)]);
     }
 
-    // Every primitive use, in the order of the nodes: a primitive used once in world space, as
-    // before instancing, so that a flat file loads as it always has; one used more often once in
-    // its own coordinates, where first used, with a placement for each use (the emitting ones
-    // are placed into the world by the scene, each use's a copy: scene.h). The budget is checked
-    // first, from the accessors' counts, before any geometry is read.
+    // f(world) for each world transform at which `node` draws its mesh: the node's own, or one per
+    // GPU instance, its T * R * S read from the accessors now (after the budget's check).
+    template <typename F>
+    void forEachWorld(const MeshNode& node, F f) const {
+        if (!node.instances) {
+            f(node.world);
+            return;
+        }
+        const GpuInstances& instances = *node.instances;
+        const std::string where = "mesh '" + gltf_.model.meshes[static_cast<size_t>(node.mesh)].name + "' (" +
+                                  std::to_string(node.mesh) + ") EXT_mesh_gpu_instancing";
+        const auto values = [&](int accessor, AccessorUse use) {
+            return accessor < 0 ? std::vector<double>() : accessorValues(gltf_, accessor, use, where);
+        };
+        const std::vector<double> translations = values(instances.translation, AccessorUse::InstanceTranslation);
+        const std::vector<double> rotations = values(instances.rotation, AccessorUse::InstanceRotation);
+        const std::vector<double> scales = values(instances.scale, AccessorUse::InstanceScale);
+        for (size_t i = 0; i < instances.count; ++i) {
+            const glm::dvec3 translation = translations.empty() ? glm::dvec3(0.0) : glm::make_vec3(&translations[3 * i]);
+            const glm::dquat rotation = rotations.empty() ? glm::dquat(1.0, 0.0, 0.0, 0.0)
+                                                          : glm::dquat(rotations[4 * i + 3], rotations[4 * i],
+                                                                       rotations[4 * i + 1], rotations[4 * i + 2]);
+            const glm::dvec3 scale = scales.empty() ? glm::dvec3(1.0) : glm::make_vec3(&scales[3 * i]);
+            const auto transform = composeTrs(translation, rotation, scale);
+            if (!transform) fail(where + ": instance " + std::to_string(i) + "'s ROTATION is not a unit quaternion");
+            f(node.world * *transform);
+        }
+    }
+
+    // Every primitive use, in the order of the nodes and their instances: a primitive used once
+    // in world space, as before instancing, so that a flat file loads as it always has; one used
+    // more often once in its own coordinates, where first used, with a placement for each use
+    // (the emitting ones are placed into the world by the scene, each use's a copy: scene.h). The
+    // budget is checked first, from the accessors' counts, before any geometry or instance is read.
     void addPrimitives() {
-        // f(mesh, primitive index, world) for every use, in order.
-        const auto forEachUse = [&](auto f) {
+        // f(mesh, primitive index, uses) for every node's primitives, in order.
+        const auto forEachPrimitive = [&](auto f) {
             for (const MeshNode& node : meshNodes_) {
                 const tinygltf::Mesh& mesh = gltf_.model.meshes[static_cast<size_t>(node.mesh)];
-                for (size_t p = 0; p < mesh.primitives.size(); ++p) f(node.mesh, p, node.world);
+                for (size_t p = 0; p < mesh.primitives.size(); ++p) f(node.mesh, p, node.useCount());
             }
         };
         const auto primitiveOf = [&](int mesh, size_t p) -> const tinygltf::Primitive& {
             return gltf_.model.meshes[static_cast<size_t>(mesh)].primitives[p];
         };
-        std::map<PrimitiveKey, size_t> uses;
-        forEachUse([&](int mesh, size_t p, const glm::dmat4&) { ++uses[keyOf(primitiveOf(mesh, p))]; });
+        std::map<PrimitiveKey, uint64_t> uses;
+        forEachPrimitive([&](int mesh, size_t p, uint64_t n) {
+            uint64_t& used = uses[keyOf(primitiveOf(mesh, p))];
+            used = saturatingAdd(used, n);
+        });
         TriangleCount count;
         std::set<PrimitiveKey> counted;
-        forEachUse([&](int mesh, size_t p, const glm::dmat4&) {
+        forEachPrimitive([&](int mesh, size_t p, uint64_t n) {
+            if (n == 0) return;
             const tinygltf::Primitive& primitive = primitiveOf(mesh, p);
             const PrimitiveKey key = keyOf(primitive);
             const uint64_t triangles = triangleCount(primitive);
             // An emitting primitive is placed into the world at each use, as a copy (scene.h).
             const bool instanced = uses[key] > 1 && !emits(primitive);
-            count.placed += triangles;
-            if (instanced) ++count.placements;
-            if (!instanced || counted.insert(key).second) count.stored += triangles;
+            count.placed = saturatingAdd(count.placed, saturatingProduct(triangles, n));
+            if (instanced) count.placements = saturatingAdd(count.placements, n);
+            if (!instanced) {
+                count.stored = saturatingAdd(count.stored, saturatingProduct(triangles, n));
+            } else if (counted.insert(key).second) {
+                count.stored = saturatingAdd(count.stored, triangles);
+            }
         });
         checkTriangleBudget(gltf_.path, count, budget_);
 
@@ -286,7 +389,7 @@ private:
         };
         std::map<PrimitiveKey, Shared> sharedMeshes;
         MeshData& meshData = parsed_.mesh;
-        forEachUse([&](int mesh, size_t p, const glm::dmat4& world) {
+        const auto addUse = [&](int mesh, size_t p, const glm::dmat4& world) {
             const PrimitiveKey key = keyOf(primitiveOf(mesh, p));
             if (uses[key] == 1) {
                 addPrimitive(mesh, p, world);
@@ -316,7 +419,13 @@ private:
                 return;
             }
             sharedMesh.placements.push_back(placement);
-        });
+        };
+        for (const MeshNode& node : meshNodes_) {
+            const size_t primitives = gltf_.model.meshes[static_cast<size_t>(node.mesh)].primitives.size();
+            forEachWorld(node, [&](const glm::dmat4& world) {
+                for (size_t p = 0; p < primitives; ++p) addUse(node.mesh, p, world);
+            });
+        }
     }
 
     // The primitive's triangles appended, at `world`.

@@ -4,8 +4,9 @@
 // T * R * S, normals by the inverse transpose, a mirroring transform keeping the front side),
 // each node's mesh primitives appended (triangles, strips and fans, with NORMAL and TEXCOORD_0),
 // its materials (gltf_materials.h), its camera and lights (gltf_cameras_lights.h). A primitive
-// that several nodes use (the same accessors, mode and material) is stored once, a shared mesh
-// placed at each of them (mesh.h); one used once is flattened into world space.
+// that several nodes or GPU instances (EXT_mesh_gpu_instancing) use (the same accessors, mode and
+// material) is stored once, a shared mesh placed at each of them (mesh.h); one used once is
+// flattened into world space.
 #include "scene/gltf_model.h"
 #include "scene/scene_format.h"
 #include "scene/scene_textures.h"

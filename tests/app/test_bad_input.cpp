@@ -47,11 +47,16 @@ std::string gltfTriangle(const std::string& primitive, const std::string& extra 
 constexpr int kBadInput = 1;
 constexpr int kBadUsage = 2;
 
-// The triangle (without its indices) used by three nodes: one primitive stored, placed three times.
-std::string gltfPlacedThrice() {
+// The triangle (without its indices) on the node list `nodes`, whose first node is the scene's.
+std::string gltfTriangleOnNodes(const std::string& nodes) {
     std::string gltf = gltfTriangle("");
-    const std::string nodes = R"("nodes":[{"mesh":0}])";
-    return gltf.replace(gltf.find(nodes), nodes.size(), R"("nodes":[{"children":[1,2,3]},{"mesh":0},{"mesh":0},{"mesh":0}])");
+    const std::string oneNode = R"("nodes":[{"mesh":0}])";
+    return gltf.replace(gltf.find(oneNode), oneNode.size(), "\"nodes\":" + nodes);
+}
+
+// The triangle used by three nodes: one primitive stored, placed three times.
+std::string gltfPlacedThrice() {
+    return gltfTriangleOnNodes(R"([{"children":[1,2,3]},{"mesh":0},{"mesh":0},{"mesh":0}])");
 }
 
 // An 8 x 4 environment map's EXR file: 384 bytes of texels.
@@ -130,6 +135,10 @@ const std::vector<BadInputCase> kCliCases = {
     {"glTF node hierarchy with a cycle",
      {{"s.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}]})"}},
      "render {dir}/s.gltf", "s.gltf: node 0 is reached twice: the node hierarchy is not a tree"},
+    {"glTF GPU instances scaled by an accessor of the wrong type",
+     {{"s.gltf", gltfTriangleOnNodes(R"([{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":)"
+                                     R"({"attributes":{"TRANSLATION":0,"SCALE":1}}}}])")}},
+     "render {dir}/s.gltf", "s.gltf: mesh '' (0) EXT_mesh_gpu_instancing: SCALE accessor 1 is not a VEC3"},
     // MTL
     {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'abc' is not a number"},
