@@ -20,6 +20,7 @@
 #include "materials/clear_coat.h"
 #include "materials/layered_bsdf.h"
 #include "materials/rough_dielectric.h"
+#include "materials/sheen.h"
 #include "materials/smooth_conductor.h"
 #include "materials/smooth_dielectric.h"
 #include "materials/thin_dielectric.h"
@@ -30,8 +31,9 @@ namespace strata {
 class Bsdf {
 public:
     using Model = std::variant<LayeredBsdf, SmoothConductor, SmoothDielectric, RoughDielectric, ThinDielectric,
-                               Coated<LayeredBsdf>, Coated<SmoothConductor>, TransmissionBlend<SmoothDielectric>,
-                               TransmissionBlend<RoughDielectric>, TransmissionBlend<ThinDielectric>>;
+                               Sheened, Coated<LayeredBsdf>, Coated<SmoothConductor>, Coated<Sheened>,
+                               TransmissionBlend<SmoothDielectric>, TransmissionBlend<RoughDielectric>,
+                               TransmissionBlend<ThinDielectric>>;
 
 private:
     Model model_;

@@ -95,5 +95,6 @@ std::optional<BsdfSample> Coated<Base>::sample(const glm::vec3& wo, const BsdfNu
 
 template class Coated<LayeredBsdf>;
 template class Coated<SmoothConductor>;
+template class Coated<Sheened>;
 
 }  // namespace strata

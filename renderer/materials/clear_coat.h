@@ -18,6 +18,7 @@
 
 #include "materials/bsdf_sample.h"
 #include "materials/layered_bsdf.h"
+#include "materials/sheen.h"
 #include "materials/smooth_conductor.h"
 
 namespace strata {
@@ -60,5 +61,6 @@ private:
 
 extern template class Coated<LayeredBsdf>;
 extern template class Coated<SmoothConductor>;
+extern template class Coated<Sheened>;
 
 }  // namespace strata

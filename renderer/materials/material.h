@@ -68,6 +68,10 @@ struct MaterialTextures {
     // specularColorFactor (specularColorTexture, sRGB).
     std::shared_ptr<const Texture> specular;
     std::shared_ptr<const Texture> specularColour;
+    // KHR_materials_sheen: RGB times `sheenColour` (sheenColorTexture, sRGB), A times
+    // `sheenRoughness` (sheenRoughnessTexture).
+    std::shared_ptr<const Texture> sheenColour;
+    std::shared_ptr<const Texture> sheenRoughness;
 };
 
 struct Material {
@@ -93,6 +97,10 @@ struct Material {
     // A clear coat over the material (KHR_materials_clearcoat): its weight and roughness.
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    // A sheen over the material, under its coat (KHR_materials_sheen; sheen.h): its colour (0:
+    // none) and roughness.
+    glm::vec3 sheenColour{0.0f};
+    float sheenRoughness = 0.0f;
     // Set by glTF when a texture varies base colour or metallic: Kd and Ks are then mapped from
     // these at each hit, and `diffuse`/`specular` above are their untextured values.
     std::optional<MetallicRoughness> metallicRoughness{};
@@ -104,7 +112,7 @@ struct Material {
     bool hasReflectanceTextures() const {
         return textures.colour || textures.roughnessMetallic || textures.transmission || textures.clearcoat ||
                textures.clearcoatRoughness || textures.specularGlossiness || textures.specular ||
-               textures.specularColour;
+               textures.specularColour || textures.sheenColour || textures.sheenRoughness;
     }
     // Whether the hit at `uv` is cut out (no surface there).
     bool cutOut(glm::vec2 uv) const {

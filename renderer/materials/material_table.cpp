@@ -51,6 +51,13 @@ const SpecularLobe* MaterialTable::lobeFor(float roughness) {
     return lobes_.emplace_back(std::make_unique<SpecularLobe>(alpha)).get();
 }
 
+const SheenLobe* MaterialTable::sheenLobeFor(float roughness) {
+    for (const auto& existing : sheenLobes_) {
+        if (existing->alpha() == sheenAlphaFromRoughness(roughness)) return existing.get();
+    }
+    return sheenLobes_.emplace_back(std::make_unique<SheenLobe>(roughness)).get();
+}
+
 const SpecularLobe* MaterialTable::quantisedLobe(float roughness, bool smoothIsNull) const {
     const auto level = static_cast<size_t>(std::lround(unitClamped(roughness) * (kRoughnessLevels - 1)));
     return level == 0 && smoothIsNull ? nullptr : quantisedLobes_[level];
@@ -59,7 +66,8 @@ const SpecularLobe* MaterialTable::quantisedLobe(float roughness, bool smoothIsN
 MaterialTable::MaterialTable(const std::vector<Material>& materials) {
     entries_.reserve(materials.size());
     for (const Material& m : materials) {
-        const bool black = isZero(m.diffuse) && isZero(m.specular) && m.transmission <= 0.0f && m.clearcoat <= 0.0f;
+        const bool black = isZero(m.diffuse) && isZero(m.specular) && m.transmission <= 0.0f && m.clearcoat <= 0.0f &&
+                           isZero(m.sheenColour);
         const bool specularLayer = !isZero(m.specular) || m.metallicRoughness || m.transmission > 0.0f;
         const SurfacePoint constants{m.diffuse,
                                      m.specular,
@@ -71,7 +79,9 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
                                      m.thinWalled,
                                      m.clearcoat,
                                      m.clearcoat > 0.0f && m.clearcoatRoughness > 0.0f ? lobeFor(m.clearcoatRoughness)
-                                                                                       : nullptr};
+                                                                                       : nullptr,
+                                     m.sheenColour,
+                                     isZero(m.sheenColour) ? nullptr : sheenLobeFor(m.sheenRoughness)};
         const bool textured = m.hasReflectanceTextures() && !black;
         materials_.push_back(m);
         if (textured) {
@@ -81,6 +91,12 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
                 for (int level = 0; level < kRoughnessLevels; ++level) {
                     quantisedLobes_[static_cast<size_t>(level)] =
                         lobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
+                }
+            }
+            if (m.textures.sheenRoughness && !isZero(m.sheenColour) && !quantisedSheenLobes_[0]) {
+                for (int level = 0; level < kRoughnessLevels; ++level) {
+                    quantisedSheenLobes_[static_cast<size_t>(level)] =
+                        sheenLobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
                 }
             }
         }
@@ -117,6 +133,11 @@ Bsdf MaterialTable::build(const SurfacePoint& p, bool front) {
         return Coated(CoatLayer{1.0f, p.specular, nullptr}, LayeredBsdf(p.diffuse, glm::vec3(0.0f), nullptr));
     }
     // (A smooth specular layer under a clear coat keeps the GGX layer's sharpest lobe.)
+    if (p.sheenLobe && !isZero(p.sheenColour)) {
+        const Sheened sheened(SheenLayer{p.sheenColour, p.sheenLobe}, layered);
+        if (p.clearcoat > 0.0f) return Coated(coat, sheened);
+        return sheened;
+    }
     if (p.clearcoat > 0.0f) return Coated(coat, layered);
     return layered;
 }
@@ -165,6 +186,11 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
     p.clearcoat *= channel(m.textures.clearcoat, 0);
     if (m.textures.clearcoatRoughness) {
         p.coatLobe = quantisedLobe(m.clearcoatRoughness * channel(m.textures.clearcoatRoughness, 1), true);
+    }
+    if (m.textures.sheenColour) p.sheenColour *= unitClamped(glm::vec3(m.textures.sheenColour->lookup(uv)));
+    if (m.textures.sheenRoughness && p.sheenLobe) {
+        const float roughness = unitClamped(m.sheenRoughness * channel(m.textures.sheenRoughness, 3));
+        p.sheenLobe = quantisedSheenLobes_[static_cast<size_t>(std::lround(roughness * (kRoughnessLevels - 1)))];
     }
     return build(p, front);
 }

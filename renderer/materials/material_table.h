@@ -7,18 +7,20 @@
 //   roughness 0 with Ks   a mirror (smooth_conductor.h) where Kd is 0, else a smooth coat of
 //                         F0 = Ks over the Lambertian Kd (clear_coat.h): the GGX layer's limit;
 //   otherwise             the layered GGX-over-Lambertian model (layered_bsdf.h);
-// then, where clearcoat > 0, a clear coat over it (clear_coat.h).
+// then, over the layered model, a sheen where its colour is not black (sheen.h; not over the
+// dielectrics' or the smooth limits' models), and where clearcoat > 0 a clear coat over it all
+// (clear_coat.h).
 //
 // Whatever a material needs beyond its own numbers is prepared once, when the scene is built: the
-// GGX albedo tables, one per distinct roughness (SpecularLobe), shared by every material of that
-// roughness and kept for the scene's lifetime, so a new integrator on the same scene (the viewer
+// GGX and sheen albedo tables, one per distinct roughness (SpecularLobe, SheenLobe), shared by
+// every material of that roughness and kept for the scene's lifetime, so a new integrator on the same scene (the viewer
 // restarts one on every camera move) rebuilds nothing.
 //
 // A material with a texture that changes its BSDF, or a hit with a vertex colour, gets the BSDF
 // built at each hit from the texels at the hit's UV and the colour. A textured roughness then
 // varies over the surface, but albedo tables cannot be built per hit: a roughness texture's values
 // are quantised to kRoughnessLevels evenly spaced roughnesses 0, 1/16, ..., 1, whose lobes are
-// built once. The roughness used is off by at most 1/32 (GGX
+// built once (a sheen roughness texture's likewise). The roughness used is off by at most 1/32 (GGX
 // alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255 bound from
 // below; the BSDF at each quantised roughness is itself exact and energy-conserving.
 #include <array>
@@ -31,6 +33,7 @@
 #include "materials/bsdf.h"
 #include "materials/layered_bsdf.h"
 #include "materials/material.h"
+#include "materials/sheen.h"
 
 namespace strata {
 
@@ -79,6 +82,8 @@ private:
         bool thinWalled;
         float clearcoat;
         const SpecularLobe* coatLobe;  // GGX at the coat's roughness; null for a smooth coat
+        glm::vec3 sheenColour;
+        const SheenLobe* sheenLobe;  // null without a sheen
     };
     struct Entry {
         Bsdf front, back;  // at the constants
@@ -89,6 +94,7 @@ private:
         bool textured;  // a texture changes the BSDF from hit to hit
     };
     const SpecularLobe* lobeFor(float roughness);
+    const SheenLobe* sheenLobeFor(float roughness);
     // The lobe of a texture-modulated roughness, quantised as above (null at roughness 0 when
     // `smoothIsNull`: the coat's smooth limit is a delta, with no lobe).
     const SpecularLobe* quantisedLobe(float roughness, bool smoothIsNull) const;
@@ -100,6 +106,8 @@ private:
     std::vector<Material> materials_;
     std::vector<std::unique_ptr<SpecularLobe>> lobes_;
     std::array<const SpecularLobe*, kRoughnessLevels> quantisedLobes_{};
+    std::vector<std::unique_ptr<SheenLobe>> sheenLobes_;
+    std::array<const SheenLobe*, kRoughnessLevels> quantisedSheenLobes_{};
 };
 
 }  // namespace strata

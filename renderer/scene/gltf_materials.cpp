@@ -370,6 +370,19 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
             gltf.warnOnce(where + ": clearcoatNormalTexture is not applied (the coat takes the base's normal)");
         }
     }
+    // KHR_materials_sheen: a sheen over the layered model, under the coat (sheen.h).
+    if (const tinygltf::Value* e = extensionOf(m, "KHR_materials_sheen")) {
+        const std::string where = name + ": KHR_materials_sheen";
+        const auto colour = unitFactors<3>(gltf, *e, "sheenColorFactor", {0.0f, 0.0f, 0.0f}, where);
+        material.sheenColour = {colour[0], colour[1], colour[2]};
+        material.sheenRoughness = numberOf(gltf, *e, "sheenRoughnessFactor", 0.0, 0.0, 1.0, where);
+        maps.sheenColour = extensionTexture(gltf, textures, *e, "sheenColorTexture", name, TextureEncoding::Colour);
+        maps.sheenRoughness =
+            extensionTexture(gltf, textures, *e, "sheenRoughnessTexture", name, TextureEncoding::Data);
+        if (material.sheenColour != glm::vec3(0.0f) && (material.transmission > 0.0f || material.roughness == 0.0f)) {
+            gltf.warnOnce(where + ": not applied to a transmitting or perfectly smooth (roughness 0) material");
+        }
+    }
     if (material.hasReflectanceTextures() && !specularGlossiness) {
         model.transmission = transmission;
         material.metallicRoughness = model;

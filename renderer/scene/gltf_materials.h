@@ -23,6 +23,10 @@
 //   KHR_materials_clearcoat  a coat of index 1.5 over the material, factor x clearcoatTexture's R,
 //                   roughness x clearcoatRoughnessTexture's G (clearcoatNormalTexture is not
 //                   applied: a warning);
+//   KHR_materials_sheen  a Charlie sheen (sheen.h) between the base and the coat, colour
+//                   sheenColorFactor x sheenColorTexture's RGB (sRGB), roughness
+//                   sheenRoughnessFactor x sheenRoughnessTexture's A; not over a transmitting or a
+//                   perfectly smooth material (a warning);
 //   KHR_materials_pbrSpecularGlossiness  in place of the metallic-roughness parameters, which are
 //                   then a fallback not read (specular_glossiness.h): diffuseFactor x
 //                   diffuseTexture (sRGB; its alpha as base colour's for MASK), specularFactor x

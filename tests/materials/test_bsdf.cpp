@@ -63,6 +63,24 @@ std::vector<Case> cases() {
                      m.clearcoat = 0.8f;
                      m.clearcoatRoughness = 0.4f;
                  })});
+    c.push_back({"sheen over layered", make([](Material& m) {
+                     m.diffuse = glm::vec3(0.3f, 0.1f, 0.5f);
+                     m.specular = glm::vec3(0.04f);
+                     m.roughness = 0.7f;
+                     m.sheenColour = glm::vec3(1.0f, 0.8f, 0.9f);
+                     m.sheenRoughness = 0.5f;
+                 })});
+    c.push_back({"sheen of roughness 0.1 over black", make([](Material& m) {
+                     m.sheenColour = glm::vec3(0.9f);
+                     m.sheenRoughness = 0.1f;
+                 })});
+    c.push_back({"rough clear coat over sheen over lambertian", make([](Material& m) {
+                     m.diffuse = glm::vec3(0.8f);
+                     m.sheenColour = glm::vec3(1.0f);
+                     m.sheenRoughness = 1.0f;
+                     m.clearcoat = 1.0f;
+                     m.clearcoatRoughness = 0.3f;
+                 })});
     c.push_back({"smooth clear coat over mirror", make([](Material& m) {
                      m.specular = glm::vec3(0.9f);
                      m.roughness = 0.0f;

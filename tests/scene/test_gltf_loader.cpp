@@ -459,6 +459,60 @@ TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at 
     checkSameBsdf(m, {0.5f, 0.5f}, expected);
 }
 
+TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, which a transmitting material does without") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["extensionsUsed"] = {"KHR_materials_sheen", "KHR_materials_transmission"};
+    // The colour texel 255, 0, 255 = 1, 0, 1 (sRGB); the roughness texel's alpha 128 = 0.502 (linear).
+    model.doc["images"] = json::array({
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}},
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {0, 0, 0, 128}))}},
+    });
+    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    const json base = {{"baseColorFactor", {0.2, 0.1, 0.3, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.6}};
+    const json sheen = {{"sheenColorFactor", {1, 0.5, 0.25}}, {"sheenRoughnessFactor", 0.8}};
+    json textured = sheen;
+    textured["sheenColorTexture"] = {{"index", 0}};
+    textured["sheenRoughnessTexture"] = {{"index", 1}};
+    model.doc["materials"] = json::array({
+        {{"name", "velvet"}, {"pbrMetallicRoughness", base}, {"extensions", {{"KHR_materials_sheen", sheen}}}},
+        {{"name", "printed"}, {"pbrMetallicRoughness", base}, {"extensions", {{"KHR_materials_sheen", textured}}}},
+        {{"name", "glass"},
+         {"pbrMetallicRoughness", base},
+         {"extensions", {{"KHR_materials_sheen", sheen}, {"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}},
+    });
+    for (int m = 0; m < 3; ++m) {
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
+    }
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    // The one warning that names the extension: read, but not applied to the glass.
+    const auto sheenWarnings = std::count_if(report.warnings.begin(), report.warnings.end(), [](const std::string& w) {
+        return w.find("KHR_materials_sheen") != std::string::npos;
+    });
+    CHECK(sheenWarnings == 1);
+    CHECK(std::count(report.warnings.begin(), report.warnings.end(),
+                     "mem/model.gltf: material 'glass' (2): KHR_materials_sheen: not applied to a transmitting or "
+                     "perfectly smooth (roughness 0) material") == 1);
+    const Material& velvet = mesh.materials[0];
+    CHECK(velvet.sheenColour == glm::vec3(1.0f, 0.5f, 0.25f));
+    CHECK(velvet.sheenRoughness == doctest::Approx(0.8));
+    const MaterialTable table(mesh.materials);
+    CHECK(table.bsdf(0).as<Sheened>() != nullptr);
+    CHECK(table.bsdf(2).as<Sheened>() == nullptr);
+    // At the texel: colour (1, 0.5, 0.25) x (1, 0, 1), roughness 0.8 x 0.502 quantised to 6/16.
+    const Material& printed = mesh.materials[1];
+    REQUIRE(printed.textures.sheenColour);
+    REQUIRE(printed.textures.sheenRoughness);
+    Material expected = printed;
+    expected.textures = {};
+    expected.metallicRoughness.reset();
+    expected.sheenColour = glm::vec3(1.0f, 0.0f, 0.25f);
+    expected.sheenRoughness = 6.0f / 16.0f;
+    checkSameBsdf(printed, {0.5f, 0.5f}, expected);
+}
+
 TEST_CASE("gltf: EXT_texture_webp's source is read in place of the core one, even where it is required") {
     Model model;
     const int positions = model.positions(kTriangle);
@@ -613,9 +667,9 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     const int indices = model.accessor(std::vector<uint16_t>{0, 1, 7}, "SCALAR", 5123, 3);
     Model required = model;
     required.meshNode({{"attributes", {{"POSITION", positions}}}});
-    required.doc["extensionsRequired"] = {"KHR_materials_sheen"};
+    required.doc["extensionsRequired"] = {"KHR_materials_iridescence"};
     CHECK(gltfError(required.gltf()) ==
-          "mem/model.gltf: requires extension KHR_materials_sheen, which Strata does not implement");
+          "mem/model.gltf: requires extension KHR_materials_iridescence, which Strata does not implement");
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
     CHECK(gltfError(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
