@@ -16,6 +16,11 @@ namespace {
 
 float mix(float atRough, float atSmooth, float t) { return atRough + (atSmooth - atRough) * t; }
 
+// Estevez & Kulla's fit of log Lambda at x: a / (1 + b x^c) + d x + e.
+float fittedLogLambda(const std::array<float, 5>& fit, float x) {
+    return fit[0] / (1.0f + fit[1] * std::pow(x, fit[2])) + fit[3] * x + fit[4];
+}
+
 // E(mu) by quadrature over the half vector h, wi = reflect(wo, h), d(wi) = 4 (wo.h) d(h), with
 // d(h) = d(cos theta_h) d(phi). The distribution peaks at the horizon (cos theta_h = 0) with a
 // width of about sqrt(alpha), so cos theta_h = t^2 over a midpoint rule in t puts 30 nodes within
@@ -73,10 +78,9 @@ float SheenLobe::density(const glm::vec3& h) const {
 }
 
 float SheenLobe::lambda(float mu) const {
-    const auto& [a, b, c, d, e] = lambdaFit_;
-    const auto logLambda = [&](float x) { return a / (1.0f + b * std::pow(x, c)) + d * x + e; };
     // Toward the normal the fit is mirrored about mu = 1/2, which softens the terminator.
-    return mu < 0.5f ? std::exp(logLambda(mu)) : std::exp(2.0f * logLambda(0.5f) - logLambda(1.0f - mu));
+    if (mu < 0.5f) return std::exp(fittedLogLambda(lambdaFit_, mu));
+    return std::exp(2.0f * fittedLogLambda(lambdaFit_, 0.5f) - fittedLogLambda(lambdaFit_, 1.0f - mu));
 }
 
 float SheenLobe::reflectance(const glm::vec3& wo, const glm::vec3& wi) const {
