@@ -9,6 +9,7 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
 #include "film/accumulation_buffer.h"
@@ -128,6 +129,12 @@ std::optional<std::string> obeyingPermissions() {
 glm::vec2 hashedPoint(uint64_t key) {
     const uint64_t bits = mixBits(key);
     return {uniformFloat(bits), uniformFloat(bits << 24)};
+}
+
+void checkNear(const glm::vec3& a, const glm::vec3& b, float tolerance) {
+    CAPTURE(a);
+    CAPTURE(b);
+    CHECK(glm::length(a - b) < tolerance);
 }
 
 MeanEstimate estimateMean(const std::vector<double>& values) {

@@ -96,6 +96,9 @@ std::optional<std::string> obeyingPermissions();
 // uniform-looking input for the tests of samplers and lights.
 glm::vec2 hashedPoint(uint64_t key);
 
+// Checks that `a` lies within `tolerance` of `b` (both captured for the message).
+void checkNear(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f);
+
 // Mean and standard error of the mean of a sample.
 struct MeanEstimate {
     double mean;

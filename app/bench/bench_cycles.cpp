@@ -42,7 +42,9 @@ constexpr int kReferenceSppFactor = 16;
 // emission; keeps the model's vertex normals; and lights the scene by its emitters, a uniform sky
 // or a map, nothing else.
 std::string unsupported(const MeshData& mesh, bool lit) {
-    if (!mesh.pointLights.empty() || !mesh.directionalLights.empty()) return "it has point or directional lights";
+    if (!mesh.pointLights.empty() || !mesh.spotLights.empty() || !mesh.directionalLights.empty()) {
+        return "it has point, spot or directional lights";
+    }
     if (!mesh.colours.empty()) return "it has vertex colours";
     bool emits = false;
     for (const Material& m : mesh.materials) {

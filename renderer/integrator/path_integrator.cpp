@@ -123,8 +123,8 @@ std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSett
     const SceneLights& lights = scene.lights();
     if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights, no environment)";
     if (lights.raysFindLight()) return std::nullopt;
-    if (!settings.nextEventEstimation) return "its only lights are point lights, which need next-event estimation (not --no-nee)";
-    if (settings.depth == 0) return "its only lights are point lights, which depth 0 never reaches";
+    if (!settings.nextEventEstimation) return "its only lights are point, spot or directional lights, which need next-event estimation (not --no-nee)";
+    if (settings.depth == 0) return "its only lights are point, spot or directional lights, which depth 0 never reaches";
     return std::nullopt;
 }
 

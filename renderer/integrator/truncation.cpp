@@ -37,8 +37,9 @@ double maxEmittedRadiance(const Scene& scene) {
 }
 
 TruncationChoice chooseSceneTruncationDepth(double epsilon, const Scene& scene) {
-    if (!scene.mesh().pointLights.empty() || !scene.mesh().directionalLights.empty()) {
-        throw Error("point and directional lights have no radiance bound");
+    const MeshData& mesh = scene.mesh();
+    if (!mesh.pointLights.empty() || !mesh.spotLights.empty() || !mesh.directionalLights.empty()) {
+        throw Error("point, spot and directional lights have no radiance bound");
     }
     const SceneSummary& summary = scene.summary();
     const auto choice = chooseTruncationDepth(epsilon, summary.maxAlbedo, maxEmittedRadiance(scene));

@@ -21,7 +21,10 @@ double areaOf(const std::array<glm::vec3, 3>& corners) {
 
 // The rule of scene_lights.h: whether the scene's own lights outshine the default sky.
 bool outshineSky(const LightDescriptions& descriptions) {
-    if (!descriptions.pointLights.empty() || !descriptions.directionalLights.empty()) return true;
+    if (!descriptions.pointLights.empty() || !descriptions.spotLights.empty() ||
+        !descriptions.directionalLights.empty()) {
+        return true;
+    }
     double emitting = 0.0;
     for (const EmittingTriangle& emitter : descriptions.emitters) {
         const double area = areaOf(emitter.corners);
@@ -53,6 +56,7 @@ SceneLights::SceneLights(const LightDescriptions& descriptions)
         triangleLight_[emitter.triangle] = static_cast<int32_t>(add(std::move(light)));
     }
     for (const PointLight& light : descriptions.pointLights) add(std::make_unique<PointLight>(light));
+    for (const SpotLight& light : descriptions.spotLights) add(std::make_unique<SpotLight>(light));
     // Lights at infinity weigh their power by the area of the scene they can reach.
     for (const DirectionalLight& light : descriptions.directionalLights) {
         add(std::make_unique<DirectionalLight>(light.direction, light.irradiance, sceneRadius_));

@@ -35,6 +35,7 @@
 #include "lights/light_sampler.h"
 #include "lights/light_tree.h"
 #include "lights/point_light.h"
+#include "lights/spot_light.h"
 #include "materials/material.h"
 
 namespace strata {
@@ -71,6 +72,7 @@ struct LightDescriptions {
     size_t triangles = 0;  // how many triangles the scene has: the range of lightOnTriangle
     std::vector<EmittingTriangle> emitters;
     std::vector<PointLight> pointLights;
+    std::vector<SpotLight> spotLights;
     std::vector<DirectionalLight> directionalLights;
     Environment environment;
     // Of a sphere that holds the scene, by which lights at infinity weigh their power.

@@ -1,5 +1,6 @@
 #include "scene/gltf_cameras_lights.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <glm/common.hpp>
@@ -8,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "util/constants.h"
 #include "util/printable.h"
 
 namespace strata {
@@ -68,8 +70,8 @@ void aimGltfCameraAtScene(CameraPose& pose, const MeshData& mesh) {
 // KHR_lights_punctual. Its intensities are photometric (candela for point and spot lights,
 // lux for directional ones); Strata takes them as radiometric without conversion: candela x
 // color as W/sr, lux x color as W/m^2. `range` is ignored (the light falls off as 1/r^2
-// everywhere, as the extension allows). A spot light lights as a point light (its cone is
-// not rendered yet). A light points down its node's local -Z.
+// everywhere, as the extension allows). A spot light's cone falls off as the extension's reference
+// implementation does (spot_light.h). A light points down its node's local -Z.
 void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData& mesh) {
     const tinygltf::Light& light = gltf.element(gltf.model.lights, index, "KHR_lights_punctual light");
     const std::string name = "light " + quote(light.name) + " (" + std::to_string(index) + ")";
@@ -85,20 +87,36 @@ void addGltfLight(GltfModel& gltf, int index, const glm::dmat4& world, MeshData&
     // Checked again as the floats they become: 1e300 is a finite double and an infinite float.
     const glm::vec3 emitted(light.intensity * color);
     if (!isFinite(emitted)) gltf.fail(name + ": intensity x color is beyond float range");
+    const glm::dvec3 direction(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+    if ((light.type == "directional" || light.type == "spot") && !(glm::length(direction) > 0.0)) {
+        gltf.fail(name + ": its node's transform has no direction");
+    }
     if (light.type == "directional") {
-        const glm::dvec3 direction(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
-        if (!(glm::length(direction) > 0.0)) gltf.fail(name + ": its node's transform has no direction");
         mesh.directionalLights.emplace_back(glm::vec3(glm::normalize(direction)), emitted);
         return;
     }
-    if (light.type == "spot") {
-        gltf.warnOnce("spot lights light as point lights for now (their cones are ignored)");
-    } else if (light.type != "point") {
+    if (light.type != "point" && light.type != "spot") {
         gltf.fail(name + ": unknown type " + quote(light.type) + " (known: point, spot, directional)");
     }
     const glm::vec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     if (!isFinite(position)) gltf.fail(name + ": its node's position is beyond float range");
-    mesh.pointLights.emplace_back(position, emitted);
+    if (light.type == "point") {
+        mesh.pointLights.emplace_back(position, emitted);
+        return;
+    }
+    double inner = light.spot.innerConeAngle;
+    double outer = light.spot.outerConeAngle;
+    if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer < 0.0) {
+        gltf.fail(name + ": spot cone angles must be finite and not negative");
+    }
+    // glTF: 0 <= inner < outer <= pi/2. Others are taken into that range, as viewers tolerate them.
+    if (!(inner < outer && outer <= kPi / 2.0)) {
+        gltf.warnOnce(name + ": spot cone angles outside 0 <= inner < outer <= pi/2; taken into that range");
+        outer = std::min(outer, kPi / 2.0);
+        inner = std::min(inner, outer);
+    }
+    mesh.spotLights.emplace_back(position, glm::vec3(glm::normalize(direction)), emitted, static_cast<float>(inner),
+                                 static_cast<float>(outer));
 }
 
 }  // namespace strata

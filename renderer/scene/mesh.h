@@ -19,6 +19,7 @@
 #include "lights/directional_light.h"
 #include "lights/environment.h"
 #include "lights/point_light.h"
+#include "lights/spot_light.h"
 #include "materials/material.h"
 
 namespace strata {
@@ -61,6 +62,7 @@ struct MeshData {
     // Disjoint ranges of the triangles, in increasing order, each with vertices of its own.
     std::vector<SharedMesh> sharedMeshes;
     std::vector<PointLight> pointLights;
+    std::vector<SpotLight> spotLights;
     std::vector<DirectionalLight> directionalLights;
     Environment environment;
 };

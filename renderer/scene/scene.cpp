@@ -250,6 +250,7 @@ LightDescriptions lightDescriptions(const MeshData& mesh, const std::pair<glm::v
                                    cornerUvs(mesh, t)});
     }
     lights.pointLights = mesh.pointLights;
+    lights.spotLights = mesh.spotLights;
     lights.directionalLights = mesh.directionalLights;
     lights.environment = mesh.environment;
     const auto& [lower, upper] = bounds;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string_view>
 #include <utility>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "util/components.h"
@@ -95,12 +97,40 @@ PointLight readPointLight(const json& entry, const std::string& path) {
     return {readVec3(entry, "position", path), intensity};
 }
 
+// A spot light: "position", "direction" (where it points), "intensity" (W/sr along its axis), and
+// its cones in degrees, "inner_cone" (default 0) and "outer_cone" (default 45), as glTF's.
+SpotLight readSpotLight(const json& entry, const std::string& path) {
+    const glm::vec3 intensity = readVec3(entry, "intensity", path);
+    if (!(minComponent(intensity) >= 0.0f)) {
+        throw Error(path + ": a spot light's \"intensity\" must be three values >= 0 (W/sr)");
+    }
+    const glm::vec3 direction = readVec3(entry, "direction", path);
+    if (direction == glm::vec3(0.0f)) throw Error(path + ": a spot light's \"direction\" must not be zero");
+    const auto degrees = [&](const char* key, float fallback) {
+        const auto it = entry.find(key);
+        if (it == entry.end()) return fallback;
+        if (!it->is_number()) throw Error(path + ": \"" + key + "\" must be a number of degrees");
+        return readFloat(*it, key, path);
+    };
+    const float inner = degrees("inner_cone", 0.0f);
+    const float outer = degrees("outer_cone", 45.0f);
+    if (!(inner >= 0.0f && inner <= outer && outer <= 90.0f)) {
+        throw Error(path + ": a spot light's cones must hold 0 <= \"inner_cone\" <= \"outer_cone\" <= 90");
+    }
+    // Normalised in double: a float's squared length overflows from about 1e19.
+    return {readVec3(entry, "position", path), glm::vec3(glm::normalize(glm::dvec3(direction))), intensity,
+            glm::radians(inner), glm::radians(outer)};
+}
+
 // One entry of "lights", read by its "type": a new light type is one more line of the table.
 void readLight(const json& entry, const std::string& path, SceneDescription& description) {
     using Reader = void (*)(const json& entry, const std::string& path, SceneDescription& into);
     static constexpr std::pair<std::string_view, Reader> kTypes[] = {
         {"point", [](const json& e, const std::string& p, SceneDescription& into) {
              into.pointLights.push_back(readPointLight(e, p));
+         }},
+        {"spot", [](const json& e, const std::string& p, SceneDescription& into) {
+             into.spotLights.push_back(readSpotLight(e, p));
          }},
     };
     const auto knownTypes = [] {

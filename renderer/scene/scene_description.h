@@ -24,6 +24,7 @@ struct SceneDescription {
     CameraSettings camera;  // the image size, and the pose when hasPose
     bool hasPose = false;
     std::vector<PointLight> pointLights;
+    std::vector<SpotLight> spotLights;
     // Kind Default without the key. A map's image is not read here: its file, one of `files`, is
     // environmentFile, which parseScene decodes from the bundle.
     Environment environment;

@@ -90,6 +90,7 @@ SceneContents parseSceneContents(const SceneBundle& bundle, const SceneBudget& b
     }
     mesh.pointLights.insert(mesh.pointLights.end(), description.pointLights.begin(),
                             description.pointLights.end());
+    mesh.spotLights.insert(mesh.spotLights.end(), description.spotLights.begin(), description.spotLights.end());
     mesh.environment = describedEnvironment(description, bundle, budget, report);
     contents.settings = description.camera;
     contents.posed = description.hasPose;
@@ -136,6 +137,9 @@ std::string describeScene(const LoadedScene& loaded) {
                   loaded.scene.mesh().pointLights.size(), s.watertight ? "watertight" : "fast",
                   s.roundingGapShare, extent.x, extent.y, extent.z);
     std::string text = line;
+    if (const size_t spots = loaded.scene.mesh().spotLights.size(); spots > 0) {
+        text += ", " + std::to_string(spots) + " spot lights";
+    }
     if (s.placements > 0) {
         text += ", " + std::to_string(s.placedTriangles) + " triangles placed by " + std::to_string(s.placements) +
                 " instances";

@@ -60,7 +60,7 @@ TEST_CASE("truncation: a scene's K_eps comes from its summary, or an error says 
     const LoadedScene furnace = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
     CHECK(chooseSceneTruncationDepth(1e-3, furnace.scene).depth == 10);  // 0.5^K <= 1e-3
     const LoadedScene pointLit = loadScene(test::testScene("cornell_point"));
-    CHECK_THROWS_WITH_AS(chooseSceneTruncationDepth(1e-3, pointLit.scene), "point and directional lights have no radiance bound",
+    CHECK_THROWS_WITH_AS(chooseSceneTruncationDepth(1e-3, pointLit.scene), "point, spot and directional lights have no radiance bound",
                          Error);
     const auto dir = test::scratchDir("truncation-white");
     std::ofstream(dir / "white.mtl") << "newmtl white\nKd 1 1 1\nKe 1 1 1\n";

@@ -54,19 +54,14 @@ MeshData square(int axis, bool towardPlus) {
 
 glm::vec3 toCamera(const CameraPose& pose) { return glm::normalize(pose.position - pose.lookAt); }
 
-void checkNear(const glm::vec3& a, const glm::vec3& b) {
-    CAPTURE(a);
-    CAPTURE(b);
-    CHECK(glm::length(a - b) < 1e-5f);
-}
 
 }  // namespace
 
 TEST_CASE("default camera: a three-quarter view of the bounding sphere's centre, all of it in frame") {
     const MeshData mesh = cube();
     const CameraPose pose = defaultCameraPose(mesh, kGltfOrientation);
-    checkNear(pose.lookAt, glm::vec3(0.5f));
-    checkNear(pose.up, glm::vec3(0, 1, 0));
+    test::checkNear(pose.lookAt, glm::vec3(0.5f));
+    test::checkNear(pose.up, glm::vec3(0, 1, 0));
     CHECK(pose.fovYDegrees == kDefaultFovYDegrees);
     // 25 degrees above, 40 degrees from the front (+z) toward the side (+x).
     const glm::vec3 d = toCamera(pose);
@@ -97,7 +92,7 @@ TEST_CASE("default camera: a Z-up model is seen with +z up from its front, -y") 
     MeshData mesh = cube();
     const ModelOrientation zUp{{0, 0, 1}, {0, -1, 0}};
     const CameraPose pose = defaultCameraPose(mesh, zUp);
-    checkNear(pose.up, glm::vec3(0, 0, 1));
+    test::checkNear(pose.up, glm::vec3(0, 0, 1));
     const glm::vec3 d = toCamera(pose);
     CHECK(glm::degrees(std::asin(d.z)) == doctest::Approx(kElevationDegrees).epsilon(1e-5));
     // The side is up x front = +x, as Blender's default camera stands (+x, -y, above).
@@ -112,12 +107,12 @@ TEST_CASE("default camera: a flat model is seen head-on from its face side") {
             const CameraPose pose = defaultCameraPose(square(axis, towardPlus), kGltfOrientation);
             glm::vec3 normal(0.0f);
             normal[axis] = towardPlus ? 1.0f : -1.0f;
-            checkNear(toCamera(pose), normal);
-            checkNear(pose.lookAt, glm::vec3(2.0f, 3.0f, 4.0f));
+            test::checkNear(toCamera(pose), normal);
+            test::checkNear(pose.lookAt, glm::vec3(2.0f, 3.0f, 4.0f));
             CHECK(std::abs(glm::dot(pose.up, normal)) < 1e-6f);
             // Upright where the plane stands (its up the model's, +y); a plan seen from above or
             // below has the model's back (-z) up.
-            checkNear(pose.up, axis == 1 ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0));
+            test::checkNear(pose.up, axis == 1 ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0));
             CHECK_NOTHROW(Camera(pose, 8, 8));
         }
     }
@@ -127,7 +122,7 @@ TEST_CASE("default camera: a flat model whose faces cancel is seen from the thre
     // The square x = 2 twice, once facing each way: the three-quarter view is on the +x side.
     MeshData mesh = square(0, true);
     addSquare(mesh, glm::vec3(2.0f, 3.0f, 4.0f), 0, false);
-    checkNear(toCamera(defaultCameraPose(mesh, kGltfOrientation)), glm::vec3(1, 0, 0));
+    test::checkNear(toCamera(defaultCameraPose(mesh, kGltfOrientation)), glm::vec3(1, 0, 0));
     // Within 1% of the radius of one plane is flat; farther is not.
     MeshData nearlyFlat = square(0, false);
     nearlyFlat.positions[0].x += 0.01f;

@@ -615,24 +615,46 @@ TEST_CASE("gltf: the scene takes the file's camera unless a description or --cam
     CHECK(loadScene(dir / "s.gltf", dir / "c.json").settings.pose.position == glm::vec3(0, 0, 2));
 }
 
-TEST_CASE("gltf: KHR_lights_punctual point and directional lights, intensity x color") {
+TEST_CASE("gltf: KHR_lights_punctual point, spot and directional lights, intensity x color") {
     Model model;
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}});
     model.doc["extensionsUsed"] = {"KHR_lights_punctual"};
     model.doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({
         {{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 10}, {"range", 3}},
         {{"type", "directional"}, {"intensity", 2}},
+        {{"type", "spot"}, {"intensity", 4}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+        {{"type", "spot"}, {"intensity", 4}, {"spot", {{"innerConeAngle", 0.7}, {"outerConeAngle", 2.0}}}},
     });
     model.addNode({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     // Turned -90 degrees about +x: its -Z points down.
     model.addNode({{"rotation", {-kHalfRoot2, 0, 0, kHalfRoot2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
-    const MeshData mesh = parse(model.gltf()).mesh;
+    model.addNode({{"translation", {0, 5, 0}},
+                   {"rotation", {-kHalfRoot2, 0, 0, kHalfRoot2}},
+                   {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    model.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 3}}}}}});
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
     REQUIRE(mesh.pointLights.size() == 1);
     CHECK(mesh.pointLights[0].position == glm::vec3(1, 2, 3));
     CHECK(mesh.pointLights[0].intensity == glm::vec3(10, 5, 2.5));
     REQUIRE(mesh.directionalLights.size() == 1);
     checkApprox(mesh.directionalLights[0].direction, {0, -1, 0});
     CHECK(mesh.directionalLights[0].irradiance == glm::vec3(2));
+    // The spot at (0, 5, 0) points down: full intensity within 0.2 radians of its axis, none
+    // beyond 0.5.
+    REQUIRE(mesh.spotLights.size() == 2);
+    const SpotLight& spot = mesh.spotLights[0];
+    CHECK(spot.position == glm::vec3(0, 5, 0));
+    checkApprox(spot.axis, {0, -1, 0});
+    CHECK(spot.intensity == glm::vec3(4));
+    CHECK(spot.falloff(std::cos(0.19f)) == 1.0f);
+    CHECK(spot.falloff(std::cos(0.51f)) == 0.0f);
+    // An outer angle past pi/2 is taken to pi/2, with a warning.
+    CHECK(mesh.spotLights[1].falloff(std::cos(1.5f)) > 0.0f);
+    CHECK(mesh.spotLights[1].falloff(std::cos(1.6f)) == 0.0f);
+    CHECK(std::count(report.warnings.begin(), report.warnings.end(),
+                     "mem/model.gltf: light '' (3): spot cone angles outside 0 <= inner < outer <= pi/2; taken "
+                     "into that range") == 1);
 }
 
 TEST_CASE("gltf: reading gathers the buffers and images a .gltf names, parsing uses only them") {

@@ -12,6 +12,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_test_model.h"
 #include "scene/scene.h"
+#include "test_support.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -134,8 +135,6 @@ glm::vec3 placed(const MeshData& mesh, size_t shared, size_t placement, size_t v
     return glm::vec3(sharedMesh.placements[placement] * glm::vec4(mesh.positions[index], 1.0f));
 }
 
-void checkNear(const glm::vec3& a, const glm::vec3& b) { CHECK(glm::length(a - b) < 1e-5f); }
-
 }  // namespace
 
 TEST_CASE("gltf nodes: EXT_mesh_gpu_instancing places the mesh at each instance's T*R*S after the node's transform") {
@@ -158,11 +157,11 @@ TEST_CASE("gltf nodes: EXT_mesh_gpu_instancing places the mesh at each instance'
     REQUIRE(mesh.triangles.size() == 1);
     REQUIRE(mesh.sharedMeshes.size() == 1);
     REQUIRE(mesh.sharedMeshes[0].placements.size() == 3);
-    checkNear(placed(mesh, 0, 0, 1), {6, 0, 0});
-    checkNear(placed(mesh, 0, 1, 0), {6, 0, 0});  // (0,0,0) turned, moved by (1,0,0), then by the node's (5,0,0)
-    checkNear(placed(mesh, 0, 1, 1), {6, 1, 0});  // (1,0,0) turned to (0,1,0)
-    checkNear(placed(mesh, 0, 2, 1), {8, 2, 0});  // (1,0,0) scaled by 3, moved by (0,2,0) and (5,0,0)
-    checkNear(placed(mesh, 0, 2, 2), {5, 5, 0});
+    test::checkNear(placed(mesh, 0, 0, 1), {6, 0, 0});
+    test::checkNear(placed(mesh, 0, 1, 0), {6, 0, 0});  // (0,0,0) turned, moved by (1,0,0), then by the node's (5,0,0)
+    test::checkNear(placed(mesh, 0, 1, 1), {6, 1, 0});  // (1,0,0) turned to (0,1,0)
+    test::checkNear(placed(mesh, 0, 2, 1), {8, 2, 0});  // (1,0,0) scaled by 3, moved by (0,2,0) and (5,0,0)
+    test::checkNear(placed(mesh, 0, 2, 2), {5, 5, 0});
 
     // Without TRANSLATION and SCALE, their parts are the identity; quantized (KHR_mesh_quantization)
     // rotations are normalized shorts.
@@ -173,8 +172,8 @@ TEST_CASE("gltf nodes: EXT_mesh_gpu_instancing places the mesh at each instance'
     const MeshData quantized = parseGltfScene(test::bundleOf(model.gltf())).mesh;
     REQUIRE(quantized.sharedMeshes.size() == 1);
     REQUIRE(quantized.sharedMeshes[0].placements.size() == 3);
-    checkNear(placed(quantized, 0, 1, 1), {5, 1, 0});
-    checkNear(placed(quantized, 0, 2, 1), {6, 0, 0});
+    test::checkNear(placed(quantized, 0, 1, 1), {5, 1, 0});
+    test::checkNear(placed(quantized, 0, 2, 1), {6, 0, 0});
 
     // One instance is a single use: flattened into world space, as a node without the extension.
     const int one = model.accessor(std::vector<float>{0, 0, 7}, "VEC3", 5126, 1);
@@ -195,7 +194,7 @@ TEST_CASE("gltf nodes: an emitting mesh is placed at each of its instances, and 
     const MeshData mesh = parseGltfScene(test::bundleOf(model.gltf())).mesh;
     REQUIRE(mesh.sharedMeshes.size() == 1);
     REQUIRE(mesh.sharedMeshes[0].placements.size() == 4);
-    checkNear(placed(mesh, 0, 3, 1), {1, 0, 3});
+    test::checkNear(placed(mesh, 0, 3, 1), {1, 0, 3});
     // The scene copies each placement of an emitter into the world, a light of its own (scene.h).
     const Scene scene(parseGltfScene(test::bundleOf(model.gltf())).mesh);
     CHECK(scene.lights().size() == 4);

@@ -1,6 +1,8 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
+#include <glm/trigonometric.hpp>
 
 #include "scene/scene_description.h"
 #include "util/error.h"
@@ -74,12 +76,33 @@ TEST_CASE("scene description: a bad file is named with the problem") {
           "s.json: a point light's \"intensity\" must be three values >= 0 (W/sr)");
 }
 
+TEST_CASE("scene description: a spot light with its direction and cones in degrees, glTF's by default") {
+    const SceneDescription d = parseSceneDescription(
+        R"({"lights":[{"type":"spot","position":[0,4,0],"direction":[0,-2,0],"intensity":[5,5,5],)"
+        R"("inner_cone":10,"outer_cone":30},{"type":"spot","position":[1,1,1],"direction":[1,0,0],"intensity":[1,1,1]}]})",
+        "s.json");
+    REQUIRE(d.spotLights.size() == 2);
+    const SpotLight& spot = d.spotLights[0];
+    CHECK(spot.position == glm::vec3(0, 4, 0));
+    CHECK(spot.axis == glm::vec3(0, -1, 0));
+    CHECK(spot.falloff(std::cos(glm::radians(9.9f))) == 1.0f);
+    CHECK(spot.falloff(std::cos(glm::radians(30.1f))) == 0.0f);
+    CHECK(d.spotLights[1].falloff(std::cos(glm::radians(44.9f))) > 0.0f);
+    CHECK(d.spotLights[1].falloff(std::cos(glm::radians(45.1f))) == 0.0f);
+    const std::string light = R"({"lights":[{"type":"spot","position":[0,4,0],"intensity":[5,5,5],)";
+    CHECK(descriptionError(light + R"("direction":[0,0,0]}]})") == "s.json: a spot light's \"direction\" must not be zero");
+    CHECK(descriptionError(light + R"("direction":[0,1,0],"inner_cone":50,"outer_cone":40}]})") ==
+          "s.json: a spot light's cones must hold 0 <= \"inner_cone\" <= \"outer_cone\" <= 90");
+    CHECK(descriptionError(light + R"("direction":[0,1,0],"outer_cone":"wide"}]})") ==
+          "s.json: \"outer_cone\" must be a number of degrees");
+}
+
 TEST_CASE("scene description: a light of an unknown type names the file and the type, and the known ones") {
-    CHECK(descriptionError(R"({"lights":[{"type":"spot","position":[0,1,0],"intensity":[1,1,1]}]})") ==
-          "s.json: unknown light type 'spot' (known: point)");
+    CHECK(descriptionError(R"({"lights":[{"type":"area","position":[0,1,0],"intensity":[1,1,1]}]})") ==
+          "s.json: unknown light type 'area' (known: point, spot)");
     CHECK(descriptionError(R"({"lights":[{"position":[0,1,0],"intensity":[1,1,1]}]})") ==
-          "s.json: each of \"lights\" needs a \"type\" (known: point)");
-    CHECK(descriptionError(R"({"lights":[{"type":7}]})") == "s.json: each of \"lights\" needs a \"type\" (known: point)");
+          "s.json: each of \"lights\" needs a \"type\" (known: point, spot)");
+    CHECK(descriptionError(R"({"lights":[{"type":7}]})") == "s.json: each of \"lights\" needs a \"type\" (known: point, spot)");
     CHECK(descriptionError(R"({"lights":[{"type":"point","position":[0,1,0]}]})") == "s.json: missing key \"intensity\"");
     CHECK(descriptionError(R"({"lights":{"type":"point"}})") == "s.json: \"lights\" must be an array");
     CHECK(descriptionError(R"({"lights":["point"]})") == "s.json: each of \"lights\" must be an object");

@@ -106,7 +106,7 @@ TEST_CASE("scene loader: an unknown light type in the description is named when 
     const auto dir = test::scratchDir("scene-unknown-light");
     writeQuadScene(dir, R"({"lights":[{"type":"area","position":[0,1,0]}]})");
     CHECK_THROWS_WITH_AS(readSceneBundle(dir / "s.obj"),
-                         ((dir / "s.json").string() + ": unknown light type 'area' (known: point)").c_str(),
+                         ((dir / "s.json").string() + ": unknown light type 'area' (known: point, spot)").c_str(),
                          Error);
 }
 
