@@ -112,6 +112,7 @@ PathIntegrator::PathIntegrator(const Scene& scene, const PathIntegratorSettings&
       warp_(samplerChoice(settings.sampler).warp),
       sampleLights_(settings.nextEventEstimation && !scene.lights().sampler().empty()),
       lightTree_(scene.lights().usesTree(settings.lightSampler)),
+      raysFindRadiance_(scene.lights().raysFindLight() || scene.summary().unlitTriangles > 0),
       lightNumbers_(lightNumbersFor(scene.lights())) {}
 
 PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& lights) {
@@ -121,6 +122,7 @@ PathIntegrator::LightNumbers PathIntegrator::lightNumbersFor(const SceneLights& 
 
 std::optional<std::string> whyBlack(const Scene& scene, const PathIntegratorSettings& settings) {
     const SceneLights& lights = scene.lights();
+    if (scene.summary().unlitTriangles > 0) return std::nullopt;  // seen whatever lights it
     if (lights.size() == 0) return "the scene has no emitter (no Ke > 0, no point lights, no environment)";
     if (lights.raysFindLight()) return std::nullopt;
     if (!settings.nextEventEstimation) return "its only lights are point, spot or directional lights, which need next-event estimation (not --no-nee)";
@@ -225,8 +227,15 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
         radiance += path.weight * emittedAlong(static_cast<uint32_t>(triangle.light), ray.direction,
                                                onLight, path.previous);
     }
-    if (bounce == settings_.depth) return false;
-    if (scene_.materials().isBlack(triangle.material)) return false;  // its weight would be zero
+    if (bounce == settings_.depth || scene_.materials().isBlack(triangle.material)) {
+        // An unlit surface (a black one) shows its colour to whatever ray finds it: no light
+        // sample could, so at full weight.
+        if (scene_.materials().isUnlit(triangle.material)) {
+            const SurfaceHit surface = scene_.surface(*hit);
+            radiance += path.weight * scene_.materials().unlitColour(triangle.material, surface.uv, surface.colour);
+        }
+        return false;
+    }
     // The bounce's random numbers depend on the path, not on the surface: drawn first, their
     // arithmetic overlaps the surface's rather than lengthening the chain from the hit to the
     // next ray (cornell_point, defaults: 5% of the CPU time). A material with no diffuse lobe
@@ -261,8 +270,8 @@ bool PathIntegrator::extend(PathState& path, const std::optional<RayHit>& hit, c
                     shadow);
     }
     // The next ray could add only the emission it finds (bounce + 1 == depth): where every light
-    // is a delta light, none, and it is not traced.
-    if (bounce + 1 == settings_.depth && !lights.raysFindLight()) return false;
+    // is a delta light and no surface is unlit, none, and it is not traced.
+    if (bounce + 1 == settings_.depth && !raysFindRadiance_) return false;
     BsdfNumbers numbers{diffuseU};
     if (bsdf.readsLobeNumbers()) addLobeNumbers(numbers, samples, bounce);
     const std::optional<BsdfSample> sampled = bsdf.sample(wo, numbers);

@@ -148,6 +148,7 @@ private:
                          // and the diffuse numbers of a material that reads none
     bool sampleLights_;  // next-event estimation on and something to sample
     bool lightTree_;     // the choice by the light tree, not by power
+    bool raysFindRadiance_;  // a ray can find a light, or an unlit surface
     LightNumbers lightNumbers_;
 };
 

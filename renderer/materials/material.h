@@ -97,6 +97,11 @@ struct Material {
     // A clear coat over the material (KHR_materials_clearcoat): its weight and roughness.
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    // A surface that shows its colour, Kd times the colour texture and the vertex colour, to every
+    // ray that finds it, and reflects nothing (glTF KHR_materials_unlit: scans and art with their
+    // lighting baked in). It is no light: next-event estimation does not sample it, and what a
+    // path finds there counts at full weight.
+    bool unlit = false;
     // A sheen over the material, under its coat (KHR_materials_sheen; sheen.h): its colour (0:
     // none) and roughness.
     glm::vec3 sheenColour{0.0f};

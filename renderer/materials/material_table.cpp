@@ -66,8 +66,8 @@ const SpecularLobe* MaterialTable::quantisedLobe(float roughness, bool smoothIsN
 MaterialTable::MaterialTable(const std::vector<Material>& materials) {
     entries_.reserve(materials.size());
     for (const Material& m : materials) {
-        const bool black = isZero(m.diffuse) && isZero(m.specular) && m.transmission <= 0.0f && m.clearcoat <= 0.0f &&
-                           isZero(m.sheenColour);
+        const bool black = m.unlit || (isZero(m.diffuse) && isZero(m.specular) && m.transmission <= 0.0f &&
+                                       m.clearcoat <= 0.0f && isZero(m.sheenColour));
         const bool specularLayer = !isZero(m.specular) || m.metallicRoughness || m.transmission > 0.0f;
         const SurfacePoint constants{m.diffuse,
                                      m.specular,
@@ -107,6 +107,12 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
         const bool readsDiffuseNumbers = textured || front.readsDiffuseNumbers() || back.readsDiffuseNumbers();
         entries_.push_back({front, back, constants, absorptionOf(m), black, readsDiffuseNumbers, textured});
     }
+}
+
+glm::vec3 MaterialTable::unlitColour(uint32_t material, glm::vec2 uv, const glm::vec3& colour) const {
+    const Material& m = materials_[material];
+    const glm::vec3 texel = m.textures.colour ? glm::vec3(m.textures.colour->lookup(uv)) : glm::vec3(1.0f);
+    return m.diffuse * unitClamped(texel) * unitClamped(colour);
 }
 
 Bsdf MaterialTable::build(const SurfacePoint& p, bool front) {

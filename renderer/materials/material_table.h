@@ -56,8 +56,12 @@ public:
         return front ? entry.front : entry.back;
     }
     // Whether the material scatters nothing, so a path that reaches it ends there (textures
-    // multiply the constants, so a black material stays black).
+    // multiply the constants, so a black material stays black). An unlit material is black.
     bool isBlack(uint32_t material) const { return entries_[material].black; }
+    // Whether the material is unlit (material.h), and the colour it shows at a hit with texture
+    // coordinates `uv` and vertex colour `colour`.
+    bool isUnlit(uint32_t material) const { return materials_[material].unlit; }
+    glm::vec3 unlitColour(uint32_t material, glm::vec2 uv, const glm::vec3& colour) const;
     // Whether the material's BSDF at some point of its surface reads the diffuse lobe's numbers
     // (Bsdf::readsDiffuseNumbers), known before a hit's BSDF is built: a path tracer then draws
     // them only for the materials that read them.

@@ -31,7 +31,7 @@ namespace {
 // extensionsRequired means the file cannot be rendered as its author meant (glTF 2.0, "Specifying
 // Extensions"), and one in extensionsUsed only is a warning. The compressions are decoded
 // (gltf_meshopt.h, gltf_draco.h) before the model is read.
-constexpr std::array<std::string_view, 16> kImplementedExtensions{
+constexpr std::array<std::string_view, 17> kImplementedExtensions{
     "EXT_mesh_gpu_instancing",
     "EXT_meshopt_compression",
     "EXT_texture_webp",
@@ -44,6 +44,7 @@ constexpr std::array<std::string_view, 16> kImplementedExtensions{
     "KHR_materials_sheen",
     "KHR_materials_specular",
     "KHR_materials_transmission",
+    "KHR_materials_unlit",
     "KHR_materials_volume",
     "KHR_mesh_quantization",
     "KHR_meshopt_compression",

@@ -387,6 +387,16 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         model.transmission = transmission;
         material.metallicRoughness = model;
     }
+    // KHR_materials_unlit: the base colour shown as it is (material.h); of the rest only the alpha
+    // that cuts out is read. (Its object is empty, which tinygltf keeps as no value.)
+    if (m.extensions.count("KHR_materials_unlit") > 0) {
+        Material unlit;
+        unlit.name = material.name;
+        unlit.unlit = true;
+        unlit.diffuse = baseColor;
+        unlit.textures.colour = specularGlossiness ? nullptr : maps.colour;
+        material = unlit;
+    }
 
     double cutoff = m.alphaCutoff;
     if (m.alphaMode == "BLEND") {

@@ -27,6 +27,9 @@
 //                   sheenColorFactor x sheenColorTexture's RGB (sRGB), roughness
 //                   sheenRoughnessFactor x sheenRoughnessTexture's A; not over a transmitting or a
 //                   perfectly smooth material (a warning);
+//   KHR_materials_unlit  the base colour (factor x texture x COLOR_0) shown as it is to every ray
+//                   that finds it, reflecting nothing and lighting nothing by itself (material.h);
+//                   only the alpha mode is read besides;
 //   KHR_materials_pbrSpecularGlossiness  in place of the metallic-roughness parameters, which are
 //                   then a fallback not read (specular_glossiness.h): diffuseFactor x
 //                   diffuseTexture (sRGB; its alpha as base colour's for MASK), specularFactor x

@@ -369,6 +369,14 @@ Scene::Scene(MeshData mesh, Traversal traversal)
         triangles_.push_back({glm::normalize(cross), mesh_.triangleMaterials[i],
                               lights_.lightOnTriangle(static_cast<uint32_t>(i))});
         const Material& m = material(static_cast<uint32_t>(i));
+        if (m.unlit) {
+            // It reflects nothing, and what it shows bounds the truncation error as an emitter's
+            // radiance does.
+            ++summary_.unlitTriangles;
+            const float texel = m.textures.colour ? maxComponent(glm::vec3(m.textures.colour->max())) : 1.0f;
+            summary_.maxEmission = glm::max(summary_.maxEmission, maxComponent(m.diffuse) * glm::min(texel, 1.0f));
+            continue;
+        }
         // Kd + Ks bounds a layered material's albedo from above (material.h keeps it <= 1 too),
         // which is what the truncation bound needs.
         summary_.maxAlbedo =

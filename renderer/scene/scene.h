@@ -68,7 +68,8 @@ struct SceneSummary {
     size_t emitters = 0;       // emitting triangles (area lights)
     double emittingArea = 0.0;
     float maxAlbedo = 0.0f;    // upper bound on the albedo of the materials in use: max Kd + max Ks
-    float maxEmission = 0.0f;  // largest Ke component in use
+    float maxEmission = 0.0f;  // largest Ke component in use, or colour of an unlit surface
+    size_t unlitTriangles = 0;  // of unlit materials (material.h): seen, though no light
     double roundingGapShare = 0.0;  // traversal_precision.h
     bool watertight = true;         // traced with Embree's watertight (robust) triangle test
 };

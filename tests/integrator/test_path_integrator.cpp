@@ -175,6 +175,46 @@ TEST_CASE("integrator: a point light through next-event estimation gives rho/pi 
     CHECK(PathIntegrator(scene, {0, SamplerKind::Strata24, true}).radiance(ray, samples, rays).x == 0.0f);
 }
 
+TEST_CASE("integrator: an unlit surface shows its colour to every ray and lights as an emitter, found by rays alone") {
+    MeshData mesh = test::lambertSquareMesh(Material{"receiver", glm::vec3(kReceiverAlbedo), glm::vec3(0.0f)});
+    Material unlit;
+    unlit.name = "unlit";
+    unlit.unlit = true;
+    unlit.diffuse = glm::vec3(0.25f, 0.5f, 0.75f);
+    mesh.materials[1] = unlit;
+    const Scene scene(std::move(mesh));
+    uint64_t rays = 0;
+    // Seen directly it is its colour, at any depth, from either side, with or without light samples.
+    for (int depth : {0, 3}) {
+        for (bool nee : {false, true}) {
+            const PathIntegrator integrator(scene, {depth, SamplerKind::Strata24, nee});
+            const PathSamples samples(3, 0, 0, 5);
+            CHECK(integrator.radiance(Ray{{0.1f, 0.1f, 0.5f}, {0.0f, 0.0f, 1.0f}}, samples, rays) == unlit.diffuse);
+            CHECK(integrator.radiance(Ray{{0.1f, 0.1f, 2.0f}, {0.0f, 0.0f, -1.0f}}, samples, rays) == unlit.diffuse);
+        }
+    }
+    CHECK_FALSE(whyBlack(scene, {1, SamplerKind::Strata24, true}));
+    // The receiver's origin at depth 1: rho / pi times the square's colour times Lambert's
+    // irradiance, with next-event estimation on (which cannot sample it) and off.
+    const double exact = kReceiverAlbedo / M_PI * 0.25 * test::kLambertSquareIrradiance;
+    for (bool nee : {false, true}) {
+        const PathIntegrator integrator(scene, {1, SamplerKind::Strata24, nee});
+        std::vector<double> means;
+        for (int pass = 0; pass < 1600; ++pass) {
+            double sum = 0.0;
+            for (int step = 0; step < kPathsPerPass; ++step) {
+                const PathSamples samples(7, static_cast<uint64_t>(pass), 0, step);
+                sum += integrator.radiance(Ray{{0.0f, 0.0f, 0.5f}, {0.0f, 0.0f, -1.0f}}, samples, rays).x;
+            }
+            means.push_back(sum / kPathsPerPass);
+        }
+        const auto estimate = test::estimateMean(means);
+        CAPTURE(nee);
+        CHECK(std::abs(estimate.mean - exact) <= test::kSigmas * estimate.standardError);
+        CHECK(estimate.standardError < 0.02 * exact);
+    }
+}
+
 TEST_CASE("integrator: Russian roulette is unbiased on the furnace and ends paths early") {
     const LoadedScene loaded = loadScene(test::sourceDir() / "assets/furnace/furnace.obj");
     const Camera camera(loaded.settings.pose, 16, 16);

@@ -513,6 +513,37 @@ TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, whic
     checkSameBsdf(printed, {0.5f, 0.5f}, expected);
 }
 
+TEST_CASE("gltf: KHR_materials_unlit shows the base colour and its texture, every other property dropped") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["extensionsUsed"] = {"KHR_materials_unlit", "KHR_materials_clearcoat"};
+    model.doc["extensionsRequired"] = {"KHR_materials_unlit"};
+    model.doc["images"] = json::array({{{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}}});
+    model.doc["textures"] = json::array({{{"source", 0}}});
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.5, 0.25, 1, 1}}, {"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 1}}},
+         {"emissiveFactor", {1, 1, 1}},
+         {"extensions", {{"KHR_materials_unlit", json::object()}, {"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}}}},
+    });
+    model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    CHECK(report.warnings.empty());
+    const Material& m = mesh.materials[0];
+    CHECK(m.unlit);
+    CHECK(m.diffuse == glm::vec3(0.5f, 0.25f, 1.0f));
+    CHECK(m.emission == glm::vec3(0.0f));
+    CHECK(m.clearcoat == 0.0f);
+    CHECK(m.textures.colour);
+    CHECK_FALSE(emitsLight(m));
+    const MaterialTable table(mesh.materials);
+    CHECK(table.isUnlit(0));
+    CHECK(table.isBlack(0));
+    checkApprox(table.unlitColour(0, {0.5f, 0.5f}, glm::vec3(1.0f, 1.0f, 0.5f)), {0.5f, 0.0f, 0.5f});
+}
+
 TEST_CASE("gltf: EXT_texture_webp's source is read in place of the core one, even where it is required") {
     Model model;
     const int positions = model.positions(kTriangle);
