@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "materials/fresnel.h"
+#include "materials/layer_mixture.h"
 #include "util/components.h"
 
 namespace strata {
@@ -72,9 +73,7 @@ std::optional<BsdfSample> Coated<Base>::sample(const glm::vec3& wo, const BsdfNu
         if (wi.z <= 0.0f) return std::nullopt;
         wi = glm::normalize(wi);
     } else {
-        BsdfNumbers inner = numbers;
-        inner.lobeChoice = std::min((numbers.lobeChoice - p) / (1.0f - p), 0x1.fffffep-1f);
-        const auto s = base_.sample(wo, inner, mode);
+        const auto s = base_.sample(wo, baseNumbers(numbers, p), mode);
         if (!s) return std::nullopt;
         if (isSpecular(s->flags)) {
             // A delta of the base (a mirror under the coat): its weight through the coat.
@@ -87,10 +86,7 @@ std::optional<BsdfSample> Coated<Base>::sample(const glm::vec3& wo, const BsdfNu
         lobe = s->flags;
         stratum = s->stratum;
     }
-    const float density = pdf(wo, wi, numbers.diffuse.warp);
-    if (!(density > 0.0f)) return std::nullopt;
-    const glm::vec3 f = evaluate(wo, wi, mode);
-    return BsdfSample{wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum};
+    return mixtureSample(*this, wo, wi, lobe, stratum, numbers.diffuse.warp, mode);
 }
 
 template class Coated<LayeredBsdf>;

@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "materials/layer_mixture.h"
 #include "sampling/hemisphere.h"
 #include "util/components.h"
 #include "util/constants.h"
@@ -133,18 +134,13 @@ std::optional<BsdfSample> Sheened::sample(const glm::vec3& wo, const BsdfNumbers
     if (numbers.lobeChoice < p) {
         wi = sampleUniformHemisphere(numbers.lobePoint);
     } else {
-        BsdfNumbers inner = numbers;
-        inner.lobeChoice = std::min((numbers.lobeChoice - p) / (1.0f - p), 0x1.fffffep-1f);
-        const auto s = base_.sample(wo, inner, mode);
+        const auto s = base_.sample(wo, baseNumbers(numbers, p), mode);
         if (!s) return std::nullopt;
         wi = s->wi;
         lobe = s->flags;
         stratum = s->stratum;
     }
-    const float density = pdf(wo, wi, numbers.diffuse.warp);
-    if (!(density > 0.0f)) return std::nullopt;
-    const glm::vec3 f = evaluate(wo, wi, mode);
-    return BsdfSample{wi, f, density, f * (wi.z / density), lobe, 1.0f, stratum};
+    return mixtureSample(*this, wo, wi, lobe, stratum, numbers.diffuse.warp, mode);
 }
 
 }  // namespace strata
