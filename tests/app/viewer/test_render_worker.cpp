@@ -36,9 +36,11 @@ long residentKilobytes() {
 }
 
 // Takes snapshots as the UI would until the worker rests at `spp`; fails after a generous bound
-// (a stuck worker, not a slow one).
+// (a stuck worker, not a slow one: under ThreadSanitizer, on two cores that other jobs share, the
+// 10^4 passes below have taken more than two minutes).
 std::shared_ptr<const WorkerSnapshot> restAt(RenderWorker& worker, uint32_t spp) {
-    for (int i = 0; i < 120000; ++i) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(10);
+    while (std::chrono::steady_clock::now() < deadline) {
         const auto snapshot = worker.latest();
         if (snapshot && snapshot->idle && snapshot->spp == spp) return snapshot;
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
