@@ -49,8 +49,10 @@ std::string unsupported(const MeshData& mesh, bool lit) {
     bool emits = false;
     for (const Material& m : mesh.materials) {
         if (m.transmission > 0.0f || m.clearcoat > 0.0f) return "material " + m.name + " transmits or is coated";
-        // Cycles 3.4's Principled sheen is Burley's, not the Charlie lobe.
+        // Cycles 3.4's Principled sheen is Burley's, not the Charlie lobe; an unlit surface would
+        // be its default Lambertian.
         if (m.sheenColour != glm::vec3(0.0f)) return "material " + m.name + " has a sheen";
+        if (m.unlit) return "material " + m.name + " is unlit";
         // Cycles 3.4's Glossy BSDF has no Fresnel and no diffuse base under it: only Strata's
         // layered model at Kd 0 and F0 = Ks = 1 (Schlick's F is then 1) is the same BRDF.
         if (m.specular != glm::vec3(0.0f) && (m.specular != glm::vec3(1.0f) || m.diffuse != glm::vec3(0.0f))) {

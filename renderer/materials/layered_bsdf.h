@@ -30,6 +30,7 @@ namespace strata {
 // A GGX lobe of one roughness and its directional albedo tables.
 struct SpecularLobe {
     explicit SpecularLobe(float alpha) : distribution(alpha), albedo(distribution) {}
+    float alpha() const { return distribution.alpha(); }
     GgxDistribution distribution;
     GgxAlbedoTable albedo;
 };

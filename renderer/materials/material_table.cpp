@@ -41,25 +41,35 @@ LayeredReflectance reflectanceOf(const Material& m, const glm::vec3& colour, flo
     return fromMetallicRoughness(mr.baseColor * colour, mr.metallic * metallicFactor,
                                  mr.dielectricF0(specularColour, specularFactor));
 }
+
+// The lobe (GGX or sheen) of `alpha` among `lobes`, built the first time a material asks for it.
+template <class Lobe>
+const Lobe* sharedLobe(std::vector<std::unique_ptr<Lobe>>& lobes, float alpha) {
+    for (const auto& existing : lobes) {
+        if (existing->alpha() == alpha) return existing.get();
+    }
+    return lobes.emplace_back(std::make_unique<Lobe>(alpha)).get();
+}
+
+// A texture-modulated roughness's quantisation level (material_table.h), and a level's roughness.
+size_t roughnessLevel(float roughness) {
+    return static_cast<size_t>(std::lround(unitClamped(roughness) * (MaterialTable::kRoughnessLevels - 1)));
+}
+float levelRoughness(size_t level) {
+    return static_cast<float>(level) / (MaterialTable::kRoughnessLevels - 1);
+}
 }  // namespace
 
 const SpecularLobe* MaterialTable::lobeFor(float roughness) {
-    const float alpha = ggxAlphaFromRoughness(roughness);
-    for (const auto& existing : lobes_) {
-        if (existing->distribution.alpha() == alpha) return existing.get();
-    }
-    return lobes_.emplace_back(std::make_unique<SpecularLobe>(alpha)).get();
+    return sharedLobe(lobes_, ggxAlphaFromRoughness(roughness));
 }
 
 const SheenLobe* MaterialTable::sheenLobeFor(float roughness) {
-    for (const auto& existing : sheenLobes_) {
-        if (existing->alpha() == sheenAlphaFromRoughness(roughness)) return existing.get();
-    }
-    return sheenLobes_.emplace_back(std::make_unique<SheenLobe>(roughness)).get();
+    return sharedLobe(sheenLobes_, sheenAlphaFromRoughness(roughness));
 }
 
 const SpecularLobe* MaterialTable::quantisedLobe(float roughness, bool smoothIsNull) const {
-    const auto level = static_cast<size_t>(std::lround(unitClamped(roughness) * (kRoughnessLevels - 1)));
+    const size_t level = roughnessLevel(roughness);
     return level == 0 && smoothIsNull ? nullptr : quantisedLobes_[level];
 }
 
@@ -88,15 +98,13 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
             const bool variesRoughness =
                 m.textures.roughnessMetallic || m.textures.clearcoatRoughness || m.textures.specularGlossiness;
             if (variesRoughness && !quantisedLobes_[0]) {
-                for (int level = 0; level < kRoughnessLevels; ++level) {
-                    quantisedLobes_[static_cast<size_t>(level)] =
-                        lobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
+                for (size_t level = 0; level < kRoughnessLevels; ++level) {
+                    quantisedLobes_[level] = lobeFor(levelRoughness(level));
                 }
             }
             if (m.textures.sheenRoughness && !isZero(m.sheenColour) && !quantisedSheenLobes_[0]) {
-                for (int level = 0; level < kRoughnessLevels; ++level) {
-                    quantisedSheenLobes_[static_cast<size_t>(level)] =
-                        sheenLobeFor(static_cast<float>(level) / (kRoughnessLevels - 1));
+                for (size_t level = 0; level < kRoughnessLevels; ++level) {
+                    quantisedSheenLobes_[level] = sheenLobeFor(levelRoughness(level));
                 }
             }
         }
@@ -173,8 +181,7 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
     if (texturedRoughness) {
         p.lobe = quantisedLobe(*texturedRoughness, false);
         // The quantised roughness, so that its limit 0 is the smooth one.
-        p.roughness = static_cast<float>(std::lround(unitClamped(*texturedRoughness) * (kRoughnessLevels - 1))) /
-                      (kRoughnessLevels - 1);
+        p.roughness = levelRoughness(roughnessLevel(*texturedRoughness));
     }
     // KHR_materials_specular's textures scale the dielectric's F0, as specularGlossiness's the F0.
     float specularFactor = 1.0f;
@@ -195,8 +202,7 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
     }
     if (m.textures.sheenColour) p.sheenColour *= unitClamped(glm::vec3(m.textures.sheenColour->lookup(uv)));
     if (m.textures.sheenRoughness && p.sheenLobe) {
-        const float roughness = unitClamped(m.sheenRoughness * channel(m.textures.sheenRoughness, 3));
-        p.sheenLobe = quantisedSheenLobes_[static_cast<size_t>(std::lround(roughness * (kRoughnessLevels - 1)))];
+        p.sheenLobe = quantisedSheenLobes_[roughnessLevel(m.sheenRoughness * channel(m.textures.sheenRoughness, 3))];
     }
     return build(p, front);
 }

@@ -13,16 +13,16 @@
 //
 // Whatever a material needs beyond its own numbers is prepared once, when the scene is built: the
 // GGX and sheen albedo tables, one per distinct roughness (SpecularLobe, SheenLobe), shared by
-// every material of that roughness and kept for the scene's lifetime, so a new integrator on the same scene (the viewer
-// restarts one on every camera move) rebuilds nothing.
+// every material of that roughness and kept for the scene's lifetime, so a new integrator on the
+// same scene (the viewer restarts one on every camera move) rebuilds nothing.
 //
 // A material with a texture that changes its BSDF, or a hit with a vertex colour, gets the BSDF
 // built at each hit from the texels at the hit's UV and the colour. A textured roughness then
 // varies over the surface, but albedo tables cannot be built per hit: a roughness texture's values
 // are quantised to kRoughnessLevels evenly spaced roughnesses 0, 1/16, ..., 1, whose lobes are
-// built once (a sheen roughness texture's likewise). The roughness used is off by at most 1/32 (GGX
-// alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255 bound from
-// below; the BSDF at each quantised roughness is itself exact and energy-conserving.
+// built once (a sheen roughness texture's likewise). The roughness used is off by at most 1/32
+// (GGX alpha = Pr^2 by at most Pr/16 + 1/1024), which the texture's own 8-bit steps of 1/255 bound
+// from below; the BSDF at each quantised roughness is itself exact and energy-conserving.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -39,7 +39,7 @@ namespace strata {
 
 class MaterialTable {
 public:
-    static constexpr int kRoughnessLevels = 17;
+    static constexpr size_t kRoughnessLevels = 17;
 
     explicit MaterialTable(const std::vector<Material>& materials);
 

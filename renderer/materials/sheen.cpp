@@ -54,7 +54,7 @@ float integratedAlbedo(const SheenLobe& lobe, float mu) {
 
 float sheenAlphaFromRoughness(float roughness) { return std::clamp(roughness * roughness, kMinSheenAlpha, 1.0f); }
 
-SheenLobe::SheenLobe(float roughness) : alpha_(sheenAlphaFromRoughness(roughness)) {
+SheenLobe::SheenLobe(float alpha) : alpha_(alpha) {
     // Estevez & Kulla's fit of log Lambda, its coefficients interpolated between alpha = 1 and
     // alpha = 0 by (1 - alpha)^2.
     const float t = (1.0f - alpha_) * (1.0f - alpha_);

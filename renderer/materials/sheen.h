@@ -35,10 +35,10 @@ inline constexpr float kMinSheenAlpha = 1e-4f;
 // alpha = roughness^2, clamped to [kMinSheenAlpha, 1].
 float sheenAlphaFromRoughness(float roughness);
 
-// The Charlie lobe of one roughness and its directional albedo table.
+// The Charlie lobe of one alpha (sheenAlphaFromRoughness) and its directional albedo table.
 class SheenLobe {
 public:
-    explicit SheenLobe(float roughness);
+    explicit SheenLobe(float alpha);
 
     float alpha() const { return alpha_; }
     // D(h), normalised so that the integral of D(h) h.z over the hemisphere is 1.

@@ -200,6 +200,27 @@ glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf
     return translate * rotate * stretch;
 }
 
+// alphaMode MASK (and BLEND, taken as MASK at 0.5): the coverage texture and cutoff of `maps`,
+// whose colour texture holds the alpha, `colourAlpha` the factor's.
+void applyAlphaMode(GltfModel& gltf, const tinygltf::Material& m, const std::string& name, double colourAlpha,
+                    MaterialTextures& maps) {
+    double cutoff = m.alphaCutoff;
+    if (m.alphaMode == "BLEND") {
+        gltf.warnOnce(name + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5");
+        cutoff = 0.5;
+    }
+    if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
+        if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
+        // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
+        // without a texture the factor alone decides, through a one-texel coverage map.
+        maps.coverage = maps.colour ? maps.colour : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
+        maps.coverageChannel = 3;
+        maps.alphaCutoff = colourAlpha > 0.0 ? static_cast<float>(cutoff / colourAlpha)
+                                             : std::numeric_limits<float>::infinity();
+        if (cutoff == 0.0) maps.coverage = nullptr;  // nothing is below 0
+    }
+}
+
 }  // namespace
 
 glm::dmat3 gltfTextureTransform(GltfModel& gltf, size_t index) {
@@ -265,6 +286,20 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         }
     }
     const glm::vec3 baseColor(glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]));
+    // KHR_materials_unlit: the base colour shown as it is (material.h); of the rest only the alpha
+    // that cuts out is read, and no other texture is decoded. (Its object is empty, which tinygltf
+    // keeps as no value.)
+    if (m.extensions.count("KHR_materials_unlit") > 0) {
+        Material unlit;
+        unlit.name = m.name;
+        unlit.unlit = true;
+        unlit.diffuse = baseColor;
+        unlit.textures.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
+                                          pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
+                                          TextureEncoding::Colour);
+        applyAlphaMode(gltf, m, name, pbr.baseColorFactor[3], unlit.textures);
+        return unlit;
+    }
     const auto metallic = static_cast<float>(pbr.metallicFactor);
     // KHR_materials_ior and KHR_materials_specular: a dielectric's reflectance at normal
     // incidence, ((ior - 1) / (ior + 1))^2 times the specular colour, at most 1, times the factor.
@@ -387,33 +422,8 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         model.transmission = transmission;
         material.metallicRoughness = model;
     }
-    // KHR_materials_unlit: the base colour shown as it is (material.h); of the rest only the alpha
-    // that cuts out is read. (Its object is empty, which tinygltf keeps as no value.)
-    if (m.extensions.count("KHR_materials_unlit") > 0) {
-        Material unlit;
-        unlit.name = material.name;
-        unlit.unlit = true;
-        unlit.diffuse = baseColor;
-        unlit.textures.colour = specularGlossiness ? nullptr : maps.colour;
-        material = unlit;
-    }
 
-    double cutoff = m.alphaCutoff;
-    if (m.alphaMode == "BLEND") {
-        gltf.warnOnce(name + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5");
-        cutoff = 0.5;
-    }
-    if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
-        if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
-        // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
-        // without a texture the factor alone decides, through a one-texel coverage map.
-        const double factorAlpha = colourAlpha;
-        maps.coverage = maps.colour ? maps.colour : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
-        maps.coverageChannel = 3;
-        maps.alphaCutoff = factorAlpha > 0.0 ? static_cast<float>(cutoff / factorAlpha)
-                                             : std::numeric_limits<float>::infinity();
-        if (cutoff == 0.0) maps.coverage = nullptr;  // nothing is below 0
-    }
+    applyAlphaMode(gltf, m, name, colourAlpha, maps);
     return material;
 }
 

@@ -89,21 +89,24 @@ bool hasPoseKey(const json& root) {
                        [&](const char* key) { return root.contains(key); });
 }
 
-PointLight readPointLight(const json& entry, const std::string& path) {
+// A light's "intensity": three values >= 0 (W/sr), for `kind` ("point", "spot").
+glm::vec3 readIntensity(const json& entry, const std::string& path, const char* kind) {
     const glm::vec3 intensity = readVec3(entry, "intensity", path);
     if (!(minComponent(intensity) >= 0.0f)) {
-        throw Error(path + ": a point light's \"intensity\" must be three values >= 0 (W/sr)");
+        throw Error(path + ": a " + kind + " light's \"intensity\" must be three values >= 0 (W/sr)");
     }
+    return intensity;
+}
+
+PointLight readPointLight(const json& entry, const std::string& path) {
+    const glm::vec3 intensity = readIntensity(entry, path, "point");
     return {readVec3(entry, "position", path), intensity};
 }
 
 // A spot light: "position", "direction" (where it points), "intensity" (W/sr along its axis), and
 // its cones in degrees, "inner_cone" (default 0) and "outer_cone" (default 45), as glTF's.
 SpotLight readSpotLight(const json& entry, const std::string& path) {
-    const glm::vec3 intensity = readVec3(entry, "intensity", path);
-    if (!(minComponent(intensity) >= 0.0f)) {
-        throw Error(path + ": a spot light's \"intensity\" must be three values >= 0 (W/sr)");
-    }
+    const glm::vec3 intensity = readIntensity(entry, path, "spot");
     const glm::vec3 direction = readVec3(entry, "direction", path);
     if (direction == glm::vec3(0.0f)) throw Error(path + ": a spot light's \"direction\" must not be zero");
     const auto degrees = [&](const char* key, float fallback) {

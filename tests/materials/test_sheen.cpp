@@ -18,7 +18,7 @@ using namespace strata;
 
 TEST_CASE("sheen: the Charlie distribution is normalised, from roughness 0 to 1") {
     for (float roughness : {0.0f, 0.1f, 0.5f, 1.0f}) {
-        const SheenLobe lobe(roughness);
+        const SheenLobe lobe(sheenAlphaFromRoughness(roughness));
         // 2 pi * integral of D(theta) cos sin dtheta over [0, pi/2], midpoint rule.
         constexpr int kSteps = 200000;
         double sum = 0.0;
@@ -34,7 +34,7 @@ TEST_CASE("sheen: the Charlie distribution is normalised, from roughness 0 to 1"
 
 TEST_CASE("sheen: the albedo table is the lobe's integral (Monte Carlo, k standard errors)") {
     for (float roughness : {0.3f, 0.7f, 1.0f}) {
-        const SheenLobe lobe(roughness);
+        const SheenLobe lobe(sheenAlphaFromRoughness(roughness));
         for (int entry : {1, 10, 22, 31}) {  // table nodes: no interpolation between them
             const float mu = static_cast<float>(entry) / 31.0f;
             const glm::vec3 wo(std::sqrt(1.0f - mu * mu), 0.0f, mu);

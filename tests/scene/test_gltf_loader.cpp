@@ -312,6 +312,21 @@ std::string rgbaPng(int width, int height, const std::vector<unsigned char>& pix
     return out;
 }
 
+// A triangle whose corners all have UV (0.5, 0.5), so that every texture is read at one texel,
+// with material `material`; and 1 x 1 RGBA PNGs (data: URIs) as the model's images, each the
+// source of the texture of the same index.
+json triangleAtOneTexel(Model& model, int material) {
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>(6, 0.5f), "VEC2", 5126, 3);
+    return {{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", material}};
+}
+void addPngTextures(Model& model, const std::vector<std::vector<unsigned char>>& texels) {
+    for (const auto& texel : texels) {
+        model.doc["images"].push_back({{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, texel))}});
+        model.doc["textures"].push_back({{"source", model.doc["textures"].size()}});
+    }
+}
+
 TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOORD_0, MASK alpha cut-outs") {
     Model model;
     const int positions = model.positions(kTriangle);
@@ -425,15 +440,9 @@ TEST_CASE("gltf: KHR_materials_pbrSpecularGlossiness onto Kd, Ks and Pr, in plac
 
 TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at each hit") {
     Model model;
-    const int positions = model.positions(kTriangle);
-    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
     model.doc["extensionsUsed"] = {"KHR_materials_specular"};
     // The factor texel: alpha 51 = 0.2 (linear); the colour texel: 255, 0, 255 = 1, 0, 1 (sRGB).
-    model.doc["images"] = json::array({
-        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {0, 0, 0, 51}))}},
-        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}},
-    });
-    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    addPngTextures(model, {{0, 0, 0, 51}, {255, 0, 255, 255}});
     model.doc["materials"] = json::array({
         {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
          {"extensions",
@@ -441,7 +450,7 @@ TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at 
             {{"specularFactor", 0.5}, {"specularColorFactor", {30, 1, 1}}, {"specularTexture", {{"index", 0}}},
              {"specularColorTexture", {{"index", 1}}}}}}}},
     });
-    model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    model.meshNode(triangleAtOneTexel(model, 0));
     LoadReport report;
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     CHECK(report.warnings.empty());
@@ -461,15 +470,9 @@ TEST_CASE("gltf: KHR_materials_specular's textures scale the dielectric's F0 at 
 
 TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, which a transmitting material does without") {
     Model model;
-    const int positions = model.positions(kTriangle);
-    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
     model.doc["extensionsUsed"] = {"KHR_materials_sheen", "KHR_materials_transmission"};
     // The colour texel 255, 0, 255 = 1, 0, 1 (sRGB); the roughness texel's alpha 128 = 0.502 (linear).
-    model.doc["images"] = json::array({
-        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}},
-        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {0, 0, 0, 128}))}},
-    });
-    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    addPngTextures(model, {{255, 0, 255, 255}, {0, 0, 0, 128}});
     const json base = {{"baseColorFactor", {0.2, 0.1, 0.3, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.6}};
     const json sheen = {{"sheenColorFactor", {1, 0.5, 0.25}}, {"sheenRoughnessFactor", 0.8}};
     json textured = sheen;
@@ -482,9 +485,7 @@ TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, whic
          {"pbrMetallicRoughness", base},
          {"extensions", {{"KHR_materials_sheen", sheen}, {"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}},
     });
-    for (int m = 0; m < 3; ++m) {
-        model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
-    }
+    for (int m = 0; m < 3; ++m) model.meshNode(triangleAtOneTexel(model, m));
     LoadReport report;
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     // The one warning that names the extension: read, but not applied to the glass.
@@ -515,19 +516,16 @@ TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, whic
 
 TEST_CASE("gltf: KHR_materials_unlit shows the base colour and its texture, every other property dropped") {
     Model model;
-    const int positions = model.positions(kTriangle);
-    const int uvs = model.accessor(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f}, "VEC2", 5126, 3);
     model.doc["extensionsUsed"] = {"KHR_materials_unlit", "KHR_materials_clearcoat"};
     model.doc["extensionsRequired"] = {"KHR_materials_unlit"};
-    model.doc["images"] = json::array({{{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 0, 255, 255}))}}});
-    model.doc["textures"] = json::array({{{"source", 0}}});
+    addPngTextures(model, {{255, 0, 255, 255}});
     model.doc["materials"] = json::array({
         {{"pbrMetallicRoughness",
           {{"baseColorFactor", {0.5, 0.25, 1, 1}}, {"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 1}}},
          {"emissiveFactor", {1, 1, 1}},
          {"extensions", {{"KHR_materials_unlit", json::object()}, {"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}}}},
     });
-    model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    model.meshNode(triangleAtOneTexel(model, 0));
     LoadReport report;
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     CHECK(report.warnings.empty());
