@@ -58,7 +58,7 @@ std::string unsupported(const MeshData& mesh, bool lit) {
         if (m.specular != glm::vec3(0.0f) && (m.specular != glm::vec3(1.0f) || m.diffuse != glm::vec3(0.0f))) {
             return "material " + m.name + " is glossy other than a white conductor (Cycles' GGX has no Fresnel)";
         }
-        if (m.textures.roughnessMetallic || m.textures.transmission || m.textures.clearcoat ||
+        if (m.textures.roughness || m.textures.metallic || m.textures.transmission || m.textures.clearcoat ||
             m.textures.clearcoatRoughness || m.textures.specularGlossiness || m.textures.emission ||
             m.textures.coverage || m.textures.normal ||
             (m.textures.colour && m.specular != glm::vec3(0.0f))) {

@@ -43,8 +43,13 @@ struct SpecularGlossiness {
 struct MaterialTextures {
     // RGB times Kd (MTL map_Kd), or times the base colour (glTF baseColorTexture).
     std::shared_ptr<const Texture> colour;
-    // glTF metallicRoughnessTexture: G times the roughness, B times metallic.
-    std::shared_ptr<const Texture> roughnessMetallic;
+    // Channel `roughnessChannel` of `roughness` times the roughness, channel `metallicChannel` of
+    // `metallic` times metallic: glTF's metallicRoughnessTexture, one texture for both (G and
+    // B), or MTL's map_Pr and map_Pm.
+    std::shared_ptr<const Texture> roughness;
+    int roughnessChannel = 1;
+    std::shared_ptr<const Texture> metallic;
+    int metallicChannel = 2;
     // RGB times Ke (MTL map_Ke, glTF emissiveTexture).
     std::shared_ptr<const Texture> emission;
     // Coverage: a hit where channel `coverageChannel` is below `alphaCutoff` is no hit at all
@@ -106,8 +111,9 @@ struct Material {
     // none) and roughness.
     glm::vec3 sheenColour{0.0f};
     float sheenRoughness = 0.0f;
-    // Set by glTF when a texture varies base colour or metallic: Kd and Ks are then mapped from
-    // these at each hit, and `diffuse`/`specular` above are their untextured values.
+    // Set by glTF (and MTL with Pm) when a texture varies base colour or metallic: Kd and Ks are
+    // then mapped from these at each hit, and `diffuse`/`specular` above are their untextured
+    // values.
     std::optional<MetallicRoughness> metallicRoughness{};
     // Likewise for glTF's specular-glossiness model, when a texture varies it.
     std::optional<SpecularGlossiness> specularGlossiness{};
@@ -115,7 +121,7 @@ struct Material {
 
     // Whether any texture changes the BSDF from hit to hit.
     bool hasReflectanceTextures() const {
-        return textures.colour || textures.roughnessMetallic || textures.transmission || textures.clearcoat ||
+        return textures.colour || textures.roughness || textures.metallic || textures.transmission || textures.clearcoat ||
                textures.clearcoatRoughness || textures.specularGlossiness || textures.specular ||
                textures.specularColour || textures.sheenColour || textures.sheenRoughness;
     }

@@ -96,7 +96,7 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
         materials_.push_back(m);
         if (textured) {
             const bool variesRoughness =
-                m.textures.roughnessMetallic || m.textures.clearcoatRoughness || m.textures.specularGlossiness;
+                m.textures.roughness || m.textures.clearcoatRoughness || m.textures.specularGlossiness;
             if (variesRoughness && !quantisedLobes_[0]) {
                 for (size_t level = 0; level < kRoughnessLevels; ++level) {
                     quantisedLobes_[level] = lobeFor(levelRoughness(level));
@@ -165,14 +165,16 @@ Bsdf MaterialTable::variedBsdf(uint32_t material, glm::vec2 uv, bool front, cons
     SurfacePoint p = entry.constants;
     glm::vec3 colour = unitClamped(vertexColour);
     if (m.textures.colour) colour *= unitClamped(glm::vec3(m.textures.colour->lookup(uv)));
-    float metallic = 1.0f;
+    // glTF keeps roughness and metallic in one texture: one lookup for both.
+    const auto& roughnessMap = m.textures.roughness;
+    const auto& metallicMap = m.textures.metallic;
+    const glm::vec4 roughnessTexel = roughnessMap ? roughnessMap->lookup(uv) : glm::vec4(1.0f);
+    const glm::vec4 metallicTexel =
+        metallicMap == roughnessMap ? roughnessTexel : metallicMap ? metallicMap->lookup(uv) : glm::vec4(1.0f);
+    const float metallic = unitClamped(metallicTexel[m.textures.metallicChannel]);
     glm::vec3 specularColour(1.0f);
     std::optional<float> texturedRoughness;
-    if (m.textures.roughnessMetallic) {
-        const glm::vec4 texel = m.textures.roughnessMetallic->lookup(uv);
-        metallic = unitClamped(texel.b);
-        texturedRoughness = m.roughness * unitClamped(texel.g);
-    }
+    if (roughnessMap) texturedRoughness = m.roughness * unitClamped(roughnessTexel[m.textures.roughnessChannel]);
     if (m.textures.specularGlossiness) {
         const glm::vec4 texel = m.textures.specularGlossiness->lookup(uv);
         specularColour = unitClamped(glm::vec3(texel));

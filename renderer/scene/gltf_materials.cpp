@@ -343,9 +343,11 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
     } else {
         maps.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
                                 pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, TextureEncoding::Colour);
-        maps.roughnessMetallic = textureOf(gltf, textures, name + " metallicRoughnessTexture",
-                                           pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                           pbr.metallicRoughnessTexture.extensions, TextureEncoding::Data);
+        // Roughness in G, metallic in B (the channels' defaults in MaterialTextures).
+        maps.roughness = textureOf(gltf, textures, name + " metallicRoughnessTexture",
+                                   pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                   pbr.metallicRoughnessTexture.extensions, TextureEncoding::Data);
+        maps.metallic = maps.roughness;
         if (specular) {
             // The factor in the texture's alpha (linear), the colour in its RGB (sRGB).
             maps.specular = extensionTexture(gltf, textures, *specular, "specularTexture", name, TextureEncoding::Data);

@@ -28,7 +28,7 @@ constexpr std::array<std::pair<std::string_view, int>, 10> kFixedOptions{{
 
 bool isMtlTextureKey(std::string_view key) {
     return key == "map_Kd" || key == "map_Ke" || key == "map_d" || key == "norm" || key == "map_Bump" ||
-           key == "bump";
+           key == "bump" || key == "map_Pr" || key == "map_Pm";
 }
 
 std::optional<MtlTextureStatement> parseMtlTextureStatement(const std::vector<std::string_view>& words) {

@@ -20,7 +20,7 @@ struct MtlTextureStatement {
     std::string unknownOption;  // the first option that is not the specification's, if any
 };
 
-// The texture keys Strata reads: map_Kd, map_Ke, map_d, norm, map_Bump, bump.
+// The texture keys Strata reads: map_Kd, map_Ke, map_d, norm, map_Bump, bump, map_Pr, map_Pm.
 bool isMtlTextureKey(std::string_view key);
 
 // The statement of `words` (the key first); empty when it names no file.

@@ -21,6 +21,7 @@
 #include "util/error.h"
 #include "geometry/polygon_triangulation.h"
 #include "geometry/smoothing_groups.h"
+#include "materials/metallic_roughness.h"
 #include "materials/microfacet.h"
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
@@ -363,6 +364,9 @@ struct MtlMaterial {
     bool hasEmission = false;  // whether it has a Ke line
     bool hasIor = false;       // an Ni line (tinyobjloader reads an absent one as 1)
     bool hasFilter = false;    // a Tf line
+    bool hasSpecular = false;  // a Ks line
+    bool hasMetallic = false;  // a Pm line: the metallic-roughness model (materialOf)
+    size_t sheenLine = 0;      // a Ps line, which is not read (materialOf)
     size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
         std::string key;
@@ -370,6 +374,12 @@ struct MtlMaterial {
         size_t line;
     };
     std::vector<TextureLine> textures;
+
+    bool hasTexture(std::string_view key) const {
+        return std::any_of(textures.begin(), textures.end(), [&](const TextureLine& t) { return t.key == key; });
+    }
+    // Whether Kd is a base colour that Pm (or map_Pm) makes metal, as glTF's (materialOf).
+    bool isMetallicRoughness() const { return hasMetallic || hasTexture("map_Pm"); }
 };
 
 // The MTL text as tinyobjloader is to read it, built by scanMtl: each newmtl names its material
@@ -396,7 +406,8 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             return;
         }
         const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf";
-        const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum";
+        const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum" || key == "Pm" ||
+                            key == "Ps" || key == "Pc" || key == "Pcr";
         const bool texture = isMtlTextureKey(key);
         if ((colour || scalar || texture) && materials.size() == first) {
             failAt(name, line, quote(key) + " before any newmtl");
@@ -421,6 +432,9 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         if (key == "Ke") materials.back().hasEmission = true;
         if (key == "Ni") materials.back().hasIor = true;
         if (key == "Tf") materials.back().hasFilter = true;
+        if (key == "Ks") materials.back().hasSpecular = true;
+        if (key == "Pm") materials.back().hasMetallic = true;
+        if (key == "Ps") materials.back().sheenLine = line;
         appendLine(tinyobjText, words);
     });
 }
@@ -481,6 +495,32 @@ bool isFinite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// A number of the PBR extension that must lie in [0, 1]; throws strata::Error naming it.
+float unitValue(float value, const char* key, const std::string& at) {
+    if (!(value >= 0.0f && value <= 1.0f)) throw Error(at + " has " + key + " outside 0..1");
+    return value;
+}
+
+// Kd and Ks of a material with Pm (or map_Pm) from base colour Kd and metallic Pm (materialOf).
+void applyMetallicRoughness(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
+                            const std::string& at) {
+    MetallicRoughness model;
+    model.baseColor = material.diffuse;
+    model.metallic = source.hasMetallic ? unitValue(m.metallic, "Pm", at) : 1.0f;
+    model.specularColour = source.hasSpecular ? glm::min(0.08f * material.specular, glm::vec3(1.0f)) : glm::vec3(0.04f);
+    const LayeredReflectance r = fromMetallicRoughness(model.baseColor, model.metallic, model.dielectricF0());
+    material.diffuse = r.diffuse;
+    material.specular = r.specular;
+    // Kept for the textures to vary; buildMesh drops it from a material without any.
+    material.metallicRoughness = model;
+}
+
+// The clear coat (Pc, Pcr) of an opaque material (materialOf).
+void applyClearCoat(Material& material, const tinyobj::material_t& m, const std::string& at) {
+    material.clearcoat = unitValue(m.clearcoat_thickness, "Pc", at);
+    material.clearcoatRoughness = unitValue(m.clearcoat_roughness, "Pcr", at);
+}
+
 // The renderer's material of an MTL material as tinyobjloader read it; throws strata::Error
 // naming its newmtl line for values that are not physical. The illumination models that ask for
 // ray-traced refraction or reflection (MTL specification, "illum"):
@@ -489,14 +529,27 @@ bool isFinite(const glm::vec3& v) {
 //                   its Kd and Ks are not used (its reflection is the interface's Fresnel);
 //   illum 3, 5      with Ks, and Pr 0 (or no Pr and Ns >= 10000): a perfect mirror of F0 = Ks
 //                   (with Kd as well: a smooth Ks coat over Kd).
-// Every other illum is the layered material of Kd, Ks and Pr (or Ns).
+// Every other illum is the layered material of Kd, Ks and Pr (or Ns), with the statements of
+// MTL's PBR extension (Clara.io's, which Blender's exporter writes and assimp reads) where given:
+//   Pm, map_Pm  metallic: Kd is then a base colour and the material glTF's metallic-roughness one
+//               (metallic_roughness.h), whose dielectric F0 is 0.08 Ks (Blender writes its
+//               Principled BSDF's Specular as Ks, and reads it back so), or 0.04 without a Ks;
+//               map_Pm alone takes Pm = 1;
+//   map_Pr      times Pr; alone it takes Pr = 1;
+//   Pc, Pcr     a clear coat of that weight and roughness, as glTF's KHR_materials_clearcoat
+//               (which Blender's glTF exporter writes from the same Clearcoat; its Cycles
+//               renders a quarter of that coat, as Disney's principled BRDF does).
+// Ps, a sheen, is not read (a warning): Blender writes its Principled BSDF's Disney sheen, a
+// weight without the roughness of the sheen Strata renders (KHR_materials_sheen's).
 Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     Material material;
     material.name = source.name;
     material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
     material.emission = {m.emission[0], m.emission[1], m.emission[2]};
     material.specular = {m.specular[0], m.specular[1], m.specular[2]};
-    material.roughness = source.hasRoughness ? m.roughness : roughnessFromShininess(m.shininess);
+    material.roughness = source.hasRoughness              ? m.roughness
+                         : source.hasTexture("map_Pr") ? 1.0f
+                                                       : roughnessFromShininess(m.shininess);
     const std::string at =
         source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
     if (!isFinite(material.diffuse) || !isFinite(material.emission) || !isFinite(material.specular) ||
@@ -525,11 +578,22 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
         if (!isFinite(tf) || minComponent(tf) < 0.0f || maxComponent(tf) > 1.0f) {
             throw Error(at + " has a Tf outside 0..1");
         }
+    } else if (source.isMetallicRoughness()) {
+        applyMetallicRoughness(material, m, source, at);
     } else if ((m.illum == 3 || m.illum == 5) && maxComponent(material.specular) > 0.0f &&
                (source.hasRoughness ? m.roughness == 0.0f : m.shininess >= 10000.0f)) {
         material.roughness = 0.0f;
     }
+    if (material.transmission == 0.0f) applyClearCoat(material, m, at);
     return material;
+}
+
+// The channel a texture statement's -imfchan r, g or b names, else `otherwise`.
+int channelOf(const MtlTextureStatement& statement, int otherwise) {
+    if (statement.channel == 'r') return 0;
+    if (statement.channel == 'g') return 1;
+    if (statement.channel == 'b') return 2;
+    return otherwise;
 }
 
 // The textures of an MTL material's texture statements, decoded from the bundle (textures are
@@ -537,6 +601,8 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
 //   map_Kd  RGB times Kd, as the MTL specification says (Blender's importer replaces Kd instead;
 //           with the usual Kd 0.8 or 1 of exporters the two differ by that factor);
 //   map_Ke  RGB times Ke; a material with map_Ke and no Ke line takes Ke = 1;
+//   map_Pr, map_Pm  roughness and metallic (materialOf): the channel -imfchan names, else the
+//           first;
 //   map_d   coverage, cut out below 0.5: the channel -imfchan names, else the image's alpha, else
 //           its first channel;
 //   norm    a tangent-space normal map, -bm scaling its x and y;
@@ -562,14 +628,16 @@ void addTextures(Material& material, const MtlMaterial& source, const std::strin
         } else if (key == "map_Ke") {
             if (!source.hasEmission) material.emission = glm::vec3(1.0f);
             material.textures.emission = texture;
+        } else if (key == "map_Pr") {
+            material.textures.roughness = texture;
+            material.textures.roughnessChannel = channelOf(statement, 0);
+        } else if (key == "map_Pm") {
+            material.textures.metallic = texture;
+            material.textures.metallicChannel = channelOf(statement, 0);
         } else if (key == "map_d") {
             const int channels = texture->channels();
-            int channel = channels == 2 || channels == 4 ? 3 : 0;
-            if (statement.channel == 'r') channel = 0;
-            if (statement.channel == 'g') channel = 1;
-            if (statement.channel == 'b') channel = 2;
             material.textures.coverage = texture;
-            material.textures.coverageChannel = channel;
+            material.textures.coverageChannel = channelOf(statement, channels == 2 || channels == 4 ? 3 : 0);
             material.textures.alphaCutoff = 0.5f;
         } else if (key == "norm" || looksLikeNormalMap(*texture)) {
             material.textures.normal = texture;
@@ -619,7 +687,14 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
             warnings.push_back(materials[i].file + ":" + std::to_string(materials[i].unreadFilterLine) +
                                ": Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1");
         }
-        addTextures(mesh.materials.back(), materials[i], mtlNames[i], textures, warnings);
+        if (materials[i].sheenLine > 0 && reader.GetMaterials()[i].sheen != 0.0f) {
+            warnings.push_back(materials[i].file + ":" + std::to_string(materials[i].sheenLine) +
+                               ": Ps (a sheen) is not read");
+        }
+        Material& material = mesh.materials.back();
+        addTextures(material, materials[i], mtlNames[i], textures, warnings);
+        // Only a texture reads the metallic-roughness model at each hit (material.h).
+        if (!material.hasReflectanceTextures()) material.metallicRoughness.reset();
     }
     // vt u v as they are (texture.h's convention is OBJ's); the w of 3D texture coordinates
     // is not read.

@@ -79,7 +79,7 @@ void checkScene(const SceneContents& contents) {
         }
         require(std::isfinite(m.textures.normalScale), "a non-finite normal map scale");
         const MaterialTextures& maps = m.textures;
-        for (const auto* texture : {&maps.colour, &maps.roughnessMetallic, &maps.emission, &maps.coverage, &maps.normal}) {
+        for (const auto* texture : {&maps.colour, &maps.roughness, &maps.metallic, &maps.emission, &maps.coverage, &maps.normal}) {
             require(!*texture || finiteNonNegative(**texture), "a texture value not finite and >= 0");
         }
     }

@@ -384,7 +384,8 @@ TEST_CASE("material table: a textured material is taken to read the diffuse numb
     metal.roughness = 0.3f;
     CHECK_FALSE(MaterialTable({metal}).readsDiffuseNumbers(0));
     // A metallic texture of 0.5 under that factor gives it one.
-    metal.textures.roughnessMetallic = std::make_shared<Texture>(1, 1, 3, std::vector<float>{0.0f, 1.0f, 0.5f});
+    metal.textures.roughness = std::make_shared<Texture>(1, 1, 3, std::vector<float>{0.0f, 1.0f, 0.5f});
+    metal.textures.metallic = metal.textures.roughness;
     const MaterialTable textured({metal});
     CHECK(textured.bsdf(0, glm::vec2(0.5f)).readsDiffuseNumbers());
     CHECK(textured.readsDiffuseNumbers(0));

@@ -359,7 +359,10 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     CHECK(mesh.uvs[0] == glm::vec2(0.25f, 0.5f));  // 1 - 0.5
     const Material& m = mesh.materials[0];
     REQUIRE(m.textures.colour);
-    REQUIRE(m.textures.roughnessMetallic);
+    REQUIRE(m.textures.roughness);
+    CHECK(m.textures.metallic == m.textures.roughness);
+    CHECK(m.textures.roughnessChannel == 1);
+    CHECK(m.textures.metallicChannel == 2);
     REQUIRE(m.metallicRoughness);
     CHECK(m.metallicRoughness->baseColor == glm::vec3(0.5f, 1.0f, 1.0f));
     // Coverage is the base colour's alpha against the cutoff.

@@ -532,3 +532,56 @@ TEST_CASE("obj: a Tf in CIE XYZ or spectral form is skipped, with a warning only
     CHECK(report.warnings ==
           std::vector<std::string>{"scene.mtl:3: Tf in CIE XYZ or spectral form is not read; the filter is 1 1 1"});
 }
+
+TEST_CASE("obj: Pm makes Kd a base colour of glTF's metallic-roughness model, Pc and Pcr a clear coat") {
+    // As Blender writes them (export_pbr_extensions): Ks is its Principled BSDF's Specular.
+    const std::string mtl =
+        "# Blender 3.4.1 MTL File: 'None'\n"
+        "newmtl gold\nKd 1 0.7 0.3\nKs 0.5 0.5 0.5\nillum 3\nPr 0.3\nPm 1\nPs 0\nPc 0\nPcr 0.03\naniso 0\nanisor 0\n"
+        "newmtl plastic\nKd 0.1 0.3 0.8\nKs 0.5 0.5 0.5\nillum 2\nPr 0.2\nPm 0\n"
+        "newmtl half\nKd 0.6 0.6 0.2\nPm 0.5\n"
+        "newmtl coated\nKd 0.6 0.05 0.05\nKs 0.25 0.25 0.25\nPr 0.6\nPm 0\nPc 1\nPcr 0.1\n"
+        "newmtl velvet\nKd 0.3 0.05 0.3\nPm 0\nPs 1\n";
+    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : {"gold", "plastic", "half", "coated", "velvet"}) obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    LoadReport report;
+    const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
+    REQUIRE(mesh.materials.size() >= 5);
+    const auto near = [](const glm::vec3& a, const glm::vec3& b) {
+        return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(1e-6f)));
+    };
+    // Metallic 1: no diffuse base, F0 the base colour (illum 3 changes nothing).
+    const Material& gold = mesh.materials[0];
+    CHECK(near(gold.diffuse, glm::vec3(0.0f)));
+    CHECK(near(gold.specular, glm::vec3(1.0f, 0.7f, 0.3f)));
+    CHECK(gold.roughness == doctest::Approx(0.3));
+    CHECK(gold.clearcoat == 0.0f);
+    // Untextured, the model needs no keeping per hit.
+    CHECK_FALSE(gold.metallicRoughness);
+    // Metallic 0: Kd as it is, F0 = 0.08 Ks = 0.04.
+    const Material& plastic = mesh.materials[1];
+    CHECK(near(plastic.diffuse, glm::vec3(0.1f, 0.3f, 0.8f)));
+    CHECK(near(plastic.specular, glm::vec3(0.04f)));
+    // Metallic 0.5 without Ks: half the base colour diffuse, F0 halfway from 0.04 to it.
+    const Material& half = mesh.materials[2];
+    CHECK(near(half.diffuse, glm::vec3(0.3f, 0.3f, 0.1f)));
+    CHECK(near(half.specular, glm::vec3(0.32f, 0.32f, 0.12f)));
+    const Material& coated = mesh.materials[3];
+    CHECK(near(coated.specular, glm::vec3(0.02f)));
+    CHECK(coated.clearcoat == 1.0f);
+    CHECK(coated.clearcoatRoughness == doctest::Approx(0.1));
+    // Ps is not read: the one warning, at its line, only where it is not 0.
+    CHECK(mesh.materials[4].sheenColour == glm::vec3(0.0f));
+    CHECK(report.warnings == std::vector<std::string>{"scene.mtl:32: Ps (a sheen) is not read"});
+}
+
+TEST_CASE("obj: Pm, Pc and Pcr outside 0..1 name the material") {
+    const auto error = [](const std::string& material) {
+        return objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n", "newmtl m\nKd 0.5 0.5 0.5\n" + material);
+    };
+    CHECK(error("Pm 1.5\n") == "scene.mtl:1: material 'm' has Pm outside 0..1");
+    CHECK(error("Pc -1\n") == "scene.mtl:1: material 'm' has Pc outside 0..1");
+    CHECK(error("Pcr 2\n") == "scene.mtl:1: material 'm' has Pcr outside 0..1");
+    CHECK(error("Pm nan\n") == "scene.mtl:3: 'nan' is not a finite number");
+    CHECK(error("Pm 0.5 1\n").find("scene.mtl:3:") == 0);
+}

@@ -11,6 +11,7 @@
 
 #include "io/image_io.h"
 #include "io/texture_image.h"
+#include "materials/material_table.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "test_support.h"
@@ -105,6 +106,33 @@ TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps
     CHECK(!m.textures.normal);
     CHECK(m.textures.coverage);  // the one usable texture
     CHECK(m.emission == glm::vec3(0.0f));
+}
+
+TEST_CASE("an MTL's map_Pm and map_Pr vary metallic and roughness, each from the channel -imfchan names") {
+    const test::ScratchDir dir = test::scratchDir("obj_metallic_roughness");
+    test::writeFile(dir / "quad.obj", kQuadObj);
+    // Without Pm and Pr lines the textures give them whole: metallic is the green of the
+    // quadrants, roughness their red (the first channel).
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Pm -imfchan g pbr.png\nmap_Pr pbr.png\n");
+    writePng(dir / "mtl" / "pbr.png", 2, 2, 3, kQuadrants);
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings.empty());
+    const Material& m = loaded.scene.mesh().materials[0];
+    REQUIRE(m.metallicRoughness);
+    CHECK(m.textures.metallicChannel == 1);
+    CHECK(m.textures.roughnessChannel == 0);
+    const MaterialTable table(loaded.scene.mesh().materials);
+    // The red quadrant: metallic 0, roughness 1: Kd 0.5 under a GGX layer of alpha 1.
+    const Bsdf red = table.bsdf(0, {0.25f, 0.75f});
+    REQUIRE(red.as<LayeredBsdf>());
+    CHECK(red.as<LayeredBsdf>()->lobe()->distribution.alpha() == doctest::Approx(1.0));
+    CHECK(red.readsDiffuseNumbers());
+    // The green one: metallic 1, roughness 0: a mirror of F0 = Kd.
+    CHECK(table.bsdf(0, {0.75f, 0.75f}).as<SmoothConductor>());
+    // The white one: metallic 1, roughness 1: a rough conductor, no diffuse base.
+    const Bsdf white = table.bsdf(0, {0.75f, 0.25f});
+    REQUIRE(white.as<LayeredBsdf>());
+    CHECK_FALSE(white.readsDiffuseNumbers());
 }
 
 TEST_CASE("a bump map whose values are normals is read as a normal map") {
