@@ -366,6 +366,7 @@ struct MtlMaterial {
     bool hasFilter = false;    // a Tf line
     bool hasSpecular = false;  // a Ks line
     bool hasMetallic = false;  // a Pm line: the metallic-roughness model (materialOf)
+    bool writtenByBlender = false;  // in an MTL that Blender 3.2 or later wrote (materialOf)
     size_t sheenLine = 0;      // a Ps line, which is not read (materialOf)
     size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
@@ -378,14 +379,26 @@ struct MtlMaterial {
     bool hasTexture(std::string_view key) const {
         return std::any_of(textures.begin(), textures.end(), [&](const TextureLine& t) { return t.key == key; });
     }
-    // Whether Kd is a base colour that Pm (or map_Pm) makes metal, as glTF's (materialOf).
-    bool isMetallicRoughness() const { return hasMetallic || hasTexture("map_Pm"); }
+    // Whether Kd is a base colour of glTF's metallic-roughness model (materialOf).
+    bool isMetallicRoughness() const { return writtenByBlender || hasMetallic || hasTexture("map_Pm"); }
 };
 
 // The MTL text as tinyobjloader is to read it, built by scanMtl: each newmtl names its material
 // by its place among all the materials ("m0", "m1", ...), a name tinyobjloader reads whole and
 // which a usemtl can refer to however the material is named.
 std::string materialToken(size_t index) { return "m" + std::to_string(index); }
+
+// Whether an MTL was written by Blender's exporter of 3.2 or later, whose first line names
+// Blender and its version ("# Blender 3.4.1 MTL File: 'None'"). Earlier exporters wrote no
+// version, and those before 2.8 another material model.
+bool isWrittenByBlender(std::string_view text) {
+    const std::string_view prefix = "# Blender ";
+    if (!text.starts_with(prefix)) return false;
+    const std::string_view line = text.substr(0, text.find('\n'));
+    const size_t version = prefix.size();
+    return version < line.size() && line[version] >= '0' && line[version] <= '9' &&
+           line.find(" MTL File") != std::string_view::npos;
+}
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
 // tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
@@ -395,6 +408,7 @@ std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
              std::string& tinyobjText, std::vector<std::string>& warnings) {
     const size_t first = materials.size();
+    const bool blender = isWrittenByBlender(text);
     forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "newmtl") {
@@ -403,9 +417,10 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             material.name = restOfLine(words);
             material.file = name;
             material.line = line;
+            material.writtenByBlender = blender;
             return;
         }
-        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf";
+        const bool colour = key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf" || (blender && key == "Ka");
         const bool scalar = key == "Ns" || key == "Pr" || key == "Ni" || key == "illum" || key == "Pm" ||
                             key == "Ps" || key == "Pc" || key == "Pcr";
         const bool texture = isMtlTextureKey(key);
@@ -501,12 +516,18 @@ float unitValue(float value, const char* key, const std::string& at) {
     return value;
 }
 
-// Kd and Ks of a material with Pm (or map_Pm) from base colour Kd and metallic Pm (materialOf).
+// Kd and Ks of a material of the metallic-roughness model from base colour Kd (materialOf).
 void applyMetallicRoughness(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
                             const std::string& at) {
     MetallicRoughness model;
     model.baseColor = material.diffuse;
-    model.metallic = source.hasMetallic ? unitValue(m.metallic, "Pm", at) : 1.0f;
+    if (source.hasMetallic) {
+        model.metallic = unitValue(m.metallic, "Pm", at);
+    } else if (source.hasTexture("map_Pm")) {
+        model.metallic = 1.0f;
+    } else {  // Blender's (materialOf)
+        model.metallic = m.illum == 3 ? unitValue((m.ambient[0] + m.ambient[1] + m.ambient[2]) / 3.0f, "Ka", at) : 0.0f;
+    }
     model.specularColour = source.hasSpecular ? glm::min(0.08f * material.specular, glm::vec3(1.0f)) : glm::vec3(0.04f);
     const LayeredReflectance r = fromMetallicRoughness(model.baseColor, model.metallic, model.dielectricF0());
     material.diffuse = r.diffuse;
@@ -529,8 +550,12 @@ void applyClearCoat(Material& material, const tinyobj::material_t& m, const std:
 //                   its Kd and Ks are not used (its reflection is the interface's Fresnel);
 //   illum 3, 5      with Ks, and Pr 0 (or no Pr and Ns >= 10000): a perfect mirror of F0 = Ks
 //                   (with Kd as well: a smooth Ks coat over Kd).
-// Every other illum is the layered material of Kd, Ks and Pr (or Ns), with the statements of
-// MTL's PBR extension (Clara.io's, which Blender's exporter writes and assimp reads) where given:
+// Every other illum is the layered material of Kd, Ks and Pr (or Ns). An MTL that Blender wrote
+// (isWrittenByBlender) describes its Principled BSDF, and is read as Blender's importer reads it:
+// Kd a base colour of glTF's metallic-roughness model, metallic Ka for illum 3 (else 0), the
+// dielectric's F0 0.08 Ks and the roughness 1 - sqrt(Ns / 1000) unless Pr is given. The
+// statements of MTL's PBR extension (Clara.io's, which Blender writes when asked and assimp
+// reads) apply to every file:
 //   Pm, map_Pm  metallic: Kd is then a base colour and the material glTF's metallic-roughness one
 //               (metallic_roughness.h), whose dielectric F0 is 0.08 Ks (Blender writes its
 //               Principled BSDF's Specular as Ks, and reads it back so), or 0.04 without a Ks;
@@ -549,6 +574,7 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     material.specular = {m.specular[0], m.specular[1], m.specular[2]};
     material.roughness = source.hasRoughness              ? m.roughness
                          : source.hasTexture("map_Pr") ? 1.0f
+                         : source.writtenByBlender     ? 1.0f - std::sqrt(std::clamp(m.shininess / 1000.0f, 0.0f, 1.0f))
                                                        : roughnessFromShininess(m.shininess);
     const std::string at =
         source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);

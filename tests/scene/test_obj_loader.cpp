@@ -14,6 +14,7 @@
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "materials/material_table.h"
+#include "materials/microfacet.h"
 #include "test_support.h"
 
 using namespace strata;
@@ -584,4 +585,53 @@ TEST_CASE("obj: Pm, Pc and Pcr outside 0..1 name the material") {
     CHECK(error("Pcr 2\n") == "scene.mtl:1: material 'm' has Pcr outside 0..1");
     CHECK(error("Pm nan\n") == "scene.mtl:3: 'nan' is not a finite number");
     CHECK(error("Pm 0.5 1\n").find("scene.mtl:3:") == 0);
+}
+
+TEST_CASE("obj: an MTL that Blender 3.2 or later wrote is read as Blender's importer reads it") {
+    // Blender 3.4.1's export of four Principled BSDFs (base colour 0.8 each): the defaults,
+    // Metallic 0.5 with Roughness 0.4, Metallic 1 with Roughness 0, and Specular 0. Blender's
+    // importer reads them back as (metallic, specular, roughness) = (0, 0.5, 0.5), (0.5, 0.5,
+    // 0.4), (1, 0.5, 0) and (0, 0, 0.5).
+    const std::string materials =
+        "newmtl Default\nNs 250.000000\nKa 1.000000 1.000000 1.000000\nKd 0.800000 0.800000 0.800000\n"
+        "Ks 0.500000 0.500000 0.500000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 2\n"
+        "newmtl HalfMetal\nNs 360.000000\nKa 0.500000 0.500000 0.500000\nKd 0.800000 0.800000 0.800000\n"
+        "Ks 0.500000 0.500000 0.500000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 3\n"
+        "newmtl Mirror\nNs 1000.000000\nKa 1.000000 1.000000 1.000000\nKd 0.800000 0.800000 0.800000\n"
+        "Ks 0.500000 0.500000 0.500000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 3\n"
+        "newmtl Spec0\nNs 250.000000\nKa 1.000000 1.000000 1.000000\nKd 0.800000 0.800000 0.800000\n"
+        "Ks 0.000000 0.000000 0.000000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 1\n";
+    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : {"Default", "HalfMetal", "Mirror", "Spec0"}) obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    const auto near = [](const glm::vec3& a, float b) {
+        return glm::all(glm::lessThanEqual(glm::abs(a - glm::vec3(b)), glm::vec3(1e-6f)));
+    };
+    const MeshData blender = parseObj(obj, "scene.obj", "# Blender 3.4.1 MTL File: 'None'\n# www.blender.org\n\n" + materials, "scene.mtl");
+    REQUIRE(blender.materials.size() >= 4);
+    const Material& plain = blender.materials[0];
+    CHECK(near(plain.diffuse, 0.8f));
+    CHECK(near(plain.specular, 0.04f));  // 0.08 Ks
+    CHECK(plain.roughness == doctest::Approx(0.5));  // 1 - sqrt(250 / 1000)
+    const Material& half = blender.materials[1];
+    CHECK(near(half.diffuse, 0.4f));
+    CHECK(near(half.specular, 0.42f));  // halfway from 0.04 to 0.8
+    CHECK(half.roughness == doctest::Approx(0.4));
+    const Material& mirror = blender.materials[2];
+    CHECK(near(mirror.diffuse, 0.0f));
+    CHECK(near(mirror.specular, 0.8f));
+    CHECK(mirror.roughness == 0.0f);
+    CHECK(MaterialTable(blender.materials).bsdf(2, glm::vec2(0.0f)).as<SmoothConductor>());
+    CHECK(near(blender.materials[3].specular, 0.0f));
+    // The same lines under another header (or Blender's before 3.2, which wrote no version) are
+    // read as the MTL specification says: Ks is the F0, Ns a Phong exponent.
+    for (const char* header : {"", "# Blender MTL File: ''\n# Material Count: 4\n"}) {
+        const MeshData other = parseObj(obj, "scene.obj", std::string(header) + materials, "scene.mtl");
+        CHECK(near(other.materials[0].specular, 0.5f));
+        CHECK(near(other.materials[1].diffuse, 0.8f));
+        CHECK(other.materials[0].roughness == doctest::Approx(roughnessFromShininess(250.0f)));
+    }
+    // Blender's Ka is its metallic where it is read: checked as the other numbers.
+    CHECK(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
+                   "# Blender 3.4.1 MTL File: 'None'\nnewmtl m\nKa 2 2 2\nillum 3\n") ==
+          "scene.mtl:2: material 'm' has Ka outside 0..1");
 }
