@@ -41,7 +41,8 @@ std::optional<MtlTextureStatement> parseMtlTextureStatement(const std::vector<st
             for (int k = 0; k < 3 && i < words.size(); ++k) {
                 const auto value = number(words[i]);
                 if (!value) break;
-                if (k < 2) values[k] = *value;
+                // from_chars reads "nan" and "inf": such a value is passed over, as w is.
+                if (k < 2 && std::isfinite(*value)) values[k] = *value;
                 ++i;
             }
             if (option == "-o") statement.offset = values;

@@ -26,6 +26,7 @@
 #include "materials/normal_map.h"
 #include "scene/mtl_texture_statement.h"
 #include "scene/scene_textures.h"
+#include "scene/uv_placement.h"
 #include "util/printable.h"
 #include "util/text_file.h"
 
@@ -634,14 +635,15 @@ int channelOf(const MtlTextureStatement& statement, int otherwise) {
 //   norm    a tangent-space normal map, -bm scaling its x and y;
 //   map_Bump, bump  the same when the image's values are a normal map's (looksLikeNormalMap);
 //           a height map is not rendered (a warning).
-// -o and -s (UV offset and scale) are not applied, and other options are skipped (warnings).
-void addTextures(Material& material, const MtlMaterial& source, const std::string& mtlName,
-                 SceneTextures& textures, std::vector<std::string>& warnings) {
+// The material's textures share one placement (-s and -o, uv_placement.h), the first used
+// texture's, with a warning for one that differs; other options are skipped (warnings). Returns
+// the placement.
+UvPlacement addTextures(Material& material, const MtlMaterial& source, const std::string& mtlName,
+                        SceneTextures& textures, std::vector<std::string>& warnings) {
+    UvPlacement placement;
+    std::string placedBy;  // the key whose placement the material's textures share
     for (const auto& [key, statement, line] : source.textures) {
         const std::string at = source.file + ":" + std::to_string(line) + ": " + key;
-        if (statement.offset != glm::vec2(0.0f) || statement.scale != glm::vec2(1.0f)) {
-            warnings.push_back(at + ": the options -o and -s are not applied");
-        }
         if (!statement.unknownOption.empty()) {
             warnings.push_back(at + ": unknown option " + quote(statement.unknownOption) + " skipped");
         }
@@ -671,8 +673,18 @@ void addTextures(Material& material, const MtlMaterial& source, const std::strin
         } else {
             warnings.push_back(at + ": " + quote(statement.file) +
                                " holds heights, not normals; bump mapping is not rendered, ignored");
+            continue;
+        }
+        const UvPlacement own{statement.scale, statement.offset};
+        if (placedBy.empty()) {
+            placement = own;
+            placedBy = key;
+        } else if (own != placement) {
+            warnings.push_back(at + ": its -o and -s differ from " + placedBy +
+                               "'s, whose placement the material's textures share");
         }
     }
+    return placement;
 }
 
 // Builds the mesh from the OBJ that validateObj accepted and the MTL files scanMtl accepted
@@ -707,6 +719,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         if (v < mesh.positions.size()) mesh.positions[v] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     }
     SceneTextures textures(bundle, warnings, TextureBudget(budget.textureBytes, budget.textureBytesSpent));
+    std::vector<UvPlacement> placements;  // per material
     for (size_t i = 0; i < materials.size(); ++i) {
         mesh.materials.push_back(materialOf(reader.GetMaterials()[i], materials[i]));
         if (materials[i].unreadFilterLine > 0 && mesh.materials.back().transmission > 0.0f) {
@@ -718,7 +731,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
                                ": Ps (a sheen) is not read");
         }
         Material& material = mesh.materials.back();
-        addTextures(material, materials[i], mtlNames[i], textures, warnings);
+        placements.push_back(addTextures(material, materials[i], mtlNames[i], textures, warnings));
         // Only a texture reads the metallic-roughness model at each hit (material.h).
         if (!material.hasReflectanceTextures()) material.metallicRoughness.reset();
     }
@@ -851,6 +864,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         mesh.normals.clear();
         mesh.triangleNormals.clear();
     }
+    placeUvs(mesh, placements);
     if (!anyUvs) {
         mesh.uvs.clear();
         mesh.triangleUvs.clear();

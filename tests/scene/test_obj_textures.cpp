@@ -88,23 +88,24 @@ TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps
     test::writeFile(dir / "quad.obj", kQuadObj);
     test::writeFile(dir / "mtl" / "quad.mtl",
                     "newmtl quad\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ke broken.png\nbump height.png\n"
-                    "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\n");
+                    "map_d -o 0.5 0.5 1 -zz 1 alpha.png\nnorm\nnorm -s 2 2 flat.png\n");
     test::writeFile(dir / "mtl" / "broken.png", "\x89PNG\r\n\x1a\nthis is not a PNG");
     writePng(dir / "mtl" / "height.png", 1, 1, 3, {128, 128, 128});
     writePng(dir / "mtl" / "alpha.png", 1, 1, 1, {255});
+    writePng(dir / "mtl" / "flat.png", 1, 1, 3, {128, 128, 255});
     const LoadedScene loaded = loadScene(dir / "quad.obj");
     CHECK(hasWarning(loaded, "quad.mtl:3: map_Kd: texture file 'mtl/missing.png' is missing; using the factor alone"));
     CHECK(hasWarning(loaded, "quad.mtl:4: map_Ke: "));
     CHECK(hasWarning(loaded, "broken.png: cannot decode the texture"));
     CHECK(hasWarning(loaded, "quad.mtl:5: bump: 'height.png' holds heights, not normals"));
-    CHECK(hasWarning(loaded, "quad.mtl:6: map_d: the options -o and -s are not applied"));
+    CHECK(hasWarning(loaded, "quad.mtl:8: norm: its -o and -s differ from map_d's, whose placement the material's textures share"));
     CHECK(hasWarning(loaded, "quad.mtl:6: map_d: unknown option '-zz' skipped"));
     CHECK(hasWarning(loaded, "quad.mtl:7: norm names no file; ignored"));
     const Material& m = loaded.scene.mesh().materials[0];
     CHECK(!m.textures.colour);
     CHECK(!m.textures.emission);
-    CHECK(!m.textures.normal);
-    CHECK(m.textures.coverage);  // the one usable texture
+    CHECK(m.textures.normal);
+    CHECK(m.textures.coverage);
     CHECK(m.emission == glm::vec3(0.0f));
 }
 
@@ -133,6 +134,31 @@ TEST_CASE("an MTL's map_Pm and map_Pr vary metallic and roughness, each from the
     const Bsdf white = table.bsdf(0, {0.75f, 0.25f});
     REQUIRE(white.as<LayeredBsdf>());
     CHECK_FALSE(white.readsDiffuseNumbers());
+}
+
+TEST_CASE("an MTL's -s and -o place its textures: uv * scale + offset, a shared vt copied per placement") {
+    const test::ScratchDir dir = test::scratchDir("obj_uv_placement");
+    // The quad's left triangle in a placed material, its right one in an unplaced one: the two
+    // share the vt of corners 1 and 3.
+    test::writeFile(dir / "quad.obj",
+                    "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                    "usemtl tiled\nf 1/1 3/3 4/4\nusemtl plain\nf 1/1 2/2 3/3\n");
+    test::writeFile(dir / "quad.mtl", "newmtl tiled\nKd 1 1 1\nmap_Kd -s 4 2 1 -o 0.25 0.5 tex.png\n"
+                                      "newmtl plain\nKd 1 1 1\nmap_Kd tex.png\n");
+    writePng(dir / "tex.png", 2, 2, 3, kQuadrants);
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    CHECK(loaded.report.warnings.empty());
+    const MeshData& mesh = loaded.scene.mesh();
+    REQUIRE(mesh.triangles.size() == 2);
+    const auto tiled = cornerUvs(mesh, 0);
+    CHECK(tiled[0] == glm::vec2(0.25f, 0.5f));
+    CHECK(tiled[1] == glm::vec2(4.25f, 2.5f));
+    CHECK(tiled[2] == glm::vec2(0.25f, 2.5f));
+    const auto plain = cornerUvs(mesh, 1);
+    CHECK(plain[0] == glm::vec2(0.0f, 0.0f));
+    CHECK(plain[2] == glm::vec2(1.0f, 1.0f));
+    // The four vt and the tiled material's three copies.
+    CHECK(mesh.uvs.size() == 7);
 }
 
 TEST_CASE("a bump map whose values are normals is read as a normal map") {
