@@ -367,7 +367,7 @@ struct MtlMaterial {
     bool hasFilter = false;    // a Tf line
     bool hasSpecular = false;  // a Ks line
     bool hasMetallic = false;  // a Pm line: the metallic-roughness model (materialOf)
-    bool writtenByBlender = false;  // in an MTL that Blender 3.2 or later wrote (materialOf)
+    bool writtenByBlender = false;  // in an MTL that Blender wrote (materialOf)
     size_t sheenLine = 0;      // a Ps line, which is not read (materialOf)
     size_t unreadFilterLine = 0;  // a Tf in CIE XYZ or spectral form, which is not read
     struct TextureLine {
@@ -389,16 +389,11 @@ struct MtlMaterial {
 // which a usemtl can refer to however the material is named.
 std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 
-// Whether an MTL was written by Blender's exporter of 3.2 or later, whose first line names
-// Blender and its version ("# Blender 3.4.1 MTL File: 'None'"). Earlier exporters wrote no
-// version, and those before 2.8 another material model.
+// Whether Blender's exporter wrote an MTL: its first line says so ("# Blender 3.4.1 MTL File:
+// 'None'", "# Blender MTL File: 'scene.blend'" before 3.2).
 bool isWrittenByBlender(std::string_view text) {
-    const std::string_view prefix = "# Blender ";
-    if (!text.starts_with(prefix)) return false;
     const std::string_view line = text.substr(0, text.find('\n'));
-    const size_t version = prefix.size();
-    return version < line.size() && line[version] >= '0' && line[version] <= '9' &&
-           line.find(" MTL File") != std::string_view::npos;
+    return line.starts_with("# Blender ") && line.find(" MTL File") != std::string_view::npos;
 }
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
@@ -552,9 +547,11 @@ void applyClearCoat(Material& material, const tinyobj::material_t& m, const std:
 //   illum 3, 5      with Ks, and Pr 0 (or no Pr and Ns >= 10000): a perfect mirror of F0 = Ks
 //                   (with Kd as well: a smooth Ks coat over Kd).
 // Every other illum is the layered material of Kd, Ks and Pr (or Ns). An MTL that Blender wrote
-// (isWrittenByBlender) describes its Principled BSDF, and is read as Blender's importer reads it:
-// Kd a base colour of glTF's metallic-roughness model, metallic Ka for illum 3 (else 0), the
-// dielectric's F0 0.08 Ks and the roughness 1 - sqrt(Ns / 1000) unless Pr is given. The
+// (isWrittenByBlender) describes its Principled BSDF (since 2.8; Blender Internal's before), and
+// is read as Blender's importer reads it: Kd a base colour of glTF's metallic-roughness model,
+// metallic Ka for illum 3 (else 0), the dielectric's F0 0.08 Ks and the roughness
+// 1 - sqrt(Ns / 1000) unless Pr is given (exporters 2.8 to 3.1 wrote Ns = 900 (1 - r)^2, 3.2 on
+// 1000 (1 - r)^2: the default 0.5 reads 0.53 from the former). The
 // statements of MTL's PBR extension (Clara.io's, which Blender writes when asked and assimp
 // reads) apply to every file:
 //   Pm, map_Pm  metallic: Kd is then a base colour and the material glTF's metallic-roughness one

@@ -587,7 +587,7 @@ TEST_CASE("obj: Pm, Pc and Pcr outside 0..1 name the material") {
     CHECK(error("Pm 0.5 1\n").find("scene.mtl:3:") == 0);
 }
 
-TEST_CASE("obj: an MTL that Blender 3.2 or later wrote is read as Blender's importer reads it") {
+TEST_CASE("obj: an MTL that Blender wrote is read as Blender's importer reads it") {
     // Blender 3.4.1's export of four Principled BSDFs (base colour 0.8 each): the defaults,
     // Metallic 0.5 with Roughness 0.4, Metallic 1 with Roughness 0, and Specular 0. Blender's
     // importer reads them back as (metallic, specular, roughness) = (0, 0.5, 0.5), (0.5, 0.5,
@@ -606,25 +606,29 @@ TEST_CASE("obj: an MTL that Blender 3.2 or later wrote is read as Blender's impo
     const auto near = [](const glm::vec3& a, float b) {
         return glm::all(glm::lessThanEqual(glm::abs(a - glm::vec3(b)), glm::vec3(1e-6f)));
     };
-    const MeshData blender = parseObj(obj, "scene.obj", "# Blender 3.4.1 MTL File: 'None'\n# www.blender.org\n\n" + materials, "scene.mtl");
-    REQUIRE(blender.materials.size() >= 4);
-    const Material& plain = blender.materials[0];
-    CHECK(near(plain.diffuse, 0.8f));
-    CHECK(near(plain.specular, 0.04f));  // 0.08 Ks
-    CHECK(plain.roughness == doctest::Approx(0.5));  // 1 - sqrt(250 / 1000)
-    const Material& half = blender.materials[1];
-    CHECK(near(half.diffuse, 0.4f));
-    CHECK(near(half.specular, 0.42f));  // halfway from 0.04 to 0.8
-    CHECK(half.roughness == doctest::Approx(0.4));
-    const Material& mirror = blender.materials[2];
-    CHECK(near(mirror.diffuse, 0.0f));
-    CHECK(near(mirror.specular, 0.8f));
-    CHECK(mirror.roughness == 0.0f);
-    CHECK(MaterialTable(blender.materials).bsdf(2, glm::vec2(0.0f)).as<SmoothConductor>());
-    CHECK(near(blender.materials[3].specular, 0.0f));
-    // The same lines under another header (or Blender's before 3.2, which wrote no version) are
-    // read as the MTL specification says: Ks is the F0, Ns a Phong exponent.
-    for (const char* header : {"", "# Blender MTL File: ''\n# Material Count: 4\n"}) {
+    // Blender 3.2 and later write their version; earlier exporters wrote none.
+    for (const char* header : {"# Blender 3.4.1 MTL File: 'None'\n# www.blender.org\n\n",
+                               "# Blender MTL File: 'scene.blend'\n# Material Count: 4\n\n"}) {
+        const MeshData blender = parseObj(obj, "scene.obj", header + materials, "scene.mtl");
+        REQUIRE(blender.materials.size() >= 4);
+        const Material& plain = blender.materials[0];
+        CHECK(near(plain.diffuse, 0.8f));
+        CHECK(near(plain.specular, 0.04f));  // 0.08 Ks
+        CHECK(plain.roughness == doctest::Approx(0.5));  // 1 - sqrt(250 / 1000)
+        const Material& half = blender.materials[1];
+        CHECK(near(half.diffuse, 0.4f));
+        CHECK(near(half.specular, 0.42f));  // halfway from 0.04 to 0.8
+        CHECK(half.roughness == doctest::Approx(0.4));
+        const Material& mirror = blender.materials[2];
+        CHECK(near(mirror.diffuse, 0.0f));
+        CHECK(near(mirror.specular, 0.8f));
+        CHECK(mirror.roughness == 0.0f);
+        CHECK(MaterialTable(blender.materials).bsdf(2, glm::vec2(0.0f)).as<SmoothConductor>());
+        CHECK(near(blender.materials[3].specular, 0.0f));
+    }
+    // The same lines under another header (or in a later line) are read as the MTL specification
+    // says: Ks is the F0, Ns a Phong exponent.
+    for (const char* header : {"", "# Exported\n# Blender 3.4.1 MTL File: 'None'\n"}) {
         const MeshData other = parseObj(obj, "scene.obj", std::string(header) + materials, "scene.mtl");
         CHECK(near(other.materials[0].specular, 0.5f));
         CHECK(near(other.materials[1].diffuse, 0.8f));
