@@ -22,6 +22,12 @@ void RenderOptions::addTo(CLI::App& command) {
     command.add_option("--camera", cameraFile, "Camera JSON (default: NAME.json beside the scene; lights stay the scene's)");
     command.add_option("--width", width, "Image width (default: from the camera file)");
     command.add_option("--height", height, "Image height (default: from the camera file)");
+    command.add_option("--aperture", aperture,
+                       "Thin-lens aperture radius in scene units, for depth of field (0: a pinhole, "
+                       "everything sharp; default: the camera's, 0 unless its JSON gives aperture_radius)");
+    command.add_option("--focus-distance", focusDistance,
+                       "Distance along the view axis to the plane in focus (0: the camera's look_at; "
+                       "default: the camera's)");
     command.add_option("--depth", depth, "Recursion depth K: bounces per path (0 = emission only)")
         ->capture_default_str();
     command.add_option("--epsilon", epsilon,
@@ -104,6 +110,8 @@ std::vector<std::string> RenderOptions::arguments() const {
     if (!cameraFile.empty()) args.insert(args.end(), {"--camera", cameraFile});
     if (width) args.insert(args.end(), {"--width", std::to_string(*width)});
     if (height) args.insert(args.end(), {"--height", std::to_string(*height)});
+    if (aperture) args.insert(args.end(), {"--aperture", text(*aperture)});
+    if (focusDistance) args.insert(args.end(), {"--focus-distance", text(*focusDistance)});
     if (depth != defaults.depth) args.insert(args.end(), {"--depth", std::to_string(depth)});
     if (epsilon) args.insert(args.end(), {"--epsilon", text(*epsilon)});
     if (sampler != defaults.sampler) args.insert(args.end(), {"--sampler", sampler});
@@ -251,12 +259,19 @@ SceneBudget RenderOptions::sceneBudget() const {
 }
 
 LoadedScene RenderOptions::parseScene(SceneBundle files, Environment* environment) const {
+    for (const auto& [option, value] : {std::pair{"--aperture", aperture}, std::pair{"--focus-distance", focusDistance}}) {
+        if (value && !(*value >= 0.0f && std::isfinite(*value))) {
+            throw UsageError(std::string(option) + ": must be a finite number >= 0");
+        }
+    }
     SceneBudget budget = sceneBudget();
     std::vector<std::string> warnings;
     const Environment given = optionsEnvironment(*this, files, budget, warnings);
     LoadedScene loaded = strata::parseScene(std::move(files), watertight ? Traversal::Watertight : Traversal::Automatic,
                                             budget);
     loaded.report.warnings.insert(loaded.report.warnings.end(), warnings.begin(), warnings.end());
+    if (aperture) loaded.settings.pose.apertureRadius = *aperture;
+    if (focusDistance) loaded.settings.pose.focusDistance = *focusDistance;
     // The --env options override the scene description's environment; without them it stands.
     if (given.kind != Environment::Kind::Default) loaded.scene.setEnvironment(given);
     if (environment) *environment = given;

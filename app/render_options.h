@@ -21,6 +21,9 @@ struct RenderOptions {
     std::string cameraFile;
     std::optional<int> width;   // unset: from the camera file
     std::optional<int> height;
+    // The camera's thin lens (camera.h); unset: the camera's own.
+    std::optional<float> aperture;
+    std::optional<float> focusDistance;
     int depth = kProgramDefaults.depth;
     std::optional<double> epsilon;  // when set, the depth comes from the truncation error
     std::string sampler{samplerName(kProgramDefaults.sampler)};
@@ -58,7 +61,8 @@ struct RenderOptions {
     // What the scene may take: --max-triangles, and --texture-budget in bytes; throws
     // strata::UsageError naming a bad value.
     SceneBudget sceneBudget() const;
-    // Builds the scene from its files within sceneBudget(), lit by the environment the options
+    // Builds the scene from its files within sceneBudget(), its camera's lens as --aperture and
+    // --focus-distance give it, lit by the environment the options
     // give (lights/environment.h) when they give one, else by the scene description's: the --env
     // map is decoded from the bundle's copy within the scene's texture budget, and what decoding
     // tolerated joins the load report's warnings. `environment`, when not null, receives the

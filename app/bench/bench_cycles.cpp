@@ -179,6 +179,10 @@ CyclesComparison runCyclesComparison(const CyclesBenchSettings& settings) {
     if (const std::string why = unsupported(mesh, settings.sky || !settings.environmentMap.empty()); !why.empty()) {
         return {title + "Skipped: the script cannot give Cycles this scene as Strata sees it: " + why + ".\n", {}};
     }
+    // The script gives Cycles a pinhole.
+    if (loaded.settings.pose.apertureRadius > 0.0f) {
+        return {title + "Skipped: the script cannot give Cycles this scene as Strata sees it: its camera has a lens.\n", {}};
+    }
     const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
     const Camera camera(loaded.settings.pose, settings.width, settings.height);
     const auto log = out / "vs-cycles.log";

@@ -106,6 +106,11 @@ uint64_t referenceKey(const LoadedScene& loaded, const Camera& camera,
         hash.addValue(v.z);
     }
     hash.addValue(pose.fovYDegrees);
+    // A lens, where there is one: a pinhole adds nothing, so keys made before lenses still hold.
+    if (camera.hasLens()) {
+        hash.addValue(pose.apertureRadius);
+        hash.addValue(pose.focusDistance);
+    }
     hash.addValue(camera.width());
     hash.addValue(camera.height());
     hash.addValue(integrator.depth);

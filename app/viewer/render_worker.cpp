@@ -30,11 +30,6 @@ constexpr int kFirstStepBands = 4;
 // the split view take turns by group, and one should not run ahead of the other by more than this.
 constexpr double kStepGroupSeconds = 2.0;
 
-bool samePose(const CameraPose& a, const CameraPose& b) {
-    return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
-           a.fovYDegrees == b.fovYDegrees && a.orthographicHalfHeight == b.orthographicHalfHeight;
-}
-
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -63,7 +58,7 @@ void appendErrorSample(std::vector<ErrorSample>& history, const ErrorSample& sam
 }
 
 bool needsRestart(const WorkerConfig& a, const WorkerConfig& b) {
-    return a.scene != b.scene || !samePose(a.pose, b.pose) || a.width != b.width ||
+    return a.scene != b.scene || a.pose != b.pose || a.width != b.width ||
            a.height != b.height || a.sides != b.sides ||
            a.nextEventEstimation != b.nextEventEstimation || a.rouletteDepth != b.rouletteDepth ||
            a.lightSampler != b.lightSampler || a.terminatorOffset != b.terminatorOffset ||

@@ -47,6 +47,8 @@ Viewer::Viewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& setting
       reference_(std::move(reference)),
       settings_(settings),
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
+    settings_.apertureRadius = scene_->settings.pose.apertureRadius;
+    settings_.focusDistance = scene_->settings.pose.focusDistance;
     panel_.setScenePath(scene_->scenePath().string());
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
     panel_.setEnvironmentMapChoices(studioLightMaps());
@@ -100,6 +102,8 @@ void Viewer::showScene(std::shared_ptr<LoadedScene> scene, double seconds) {
     }
     scene_ = std::move(scene);
     camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
+    settings_.apertureRadius = scene_->settings.pose.apertureRadius;
+    settings_.focusDistance = scene_->settings.pose.focusDistance;
     const std::string path = scene_->scenePath().string();
     panel_.setScenePath(path);
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
@@ -165,6 +169,25 @@ void Viewer::handleDivider(const ImGuiIO& io) {
     }
 }
 
+void Viewer::focusOnClick(const ImGuiIO& io, const CameraPose& pose, int width, int height) {
+    if (io.WantCaptureMouse || !io.KeyCtrl || !ImGui::IsMouseClicked(0)) return;
+    const float u = (io.MousePos.x - static_cast<float>(imageArea_.x)) / static_cast<float>(imageArea_.width);
+    const float v = io.MousePos.y / static_cast<float>(imageArea_.height);
+    if (!(u >= 0.0f && u < 1.0f && v >= 0.0f && v < 1.0f)) return;
+    // The pinhole ray through the pixel's centre, to the first surface: its depth along the view.
+    CameraPose pinhole = pose;
+    pinhole.apertureRadius = 0.0f;
+    const Ray ray = Camera(pinhole, width, height)
+                        .generateRay(static_cast<int>(u * static_cast<float>(width)),
+                                     static_cast<int>(v * static_cast<float>(height)), glm::vec2(0.5f));
+    if (const auto hit = scene_->scene.intersect(ray)) {
+        settings_.focusDistance = hit->t * glm::dot(ray.direction, glm::normalize(pose.lookAt - pose.position));
+        char message[64];
+        std::snprintf(message, sizeof message, "focused at %.4g", settings_.focusDistance);
+        panel_.setMessage(message);
+    }
+}
+
 void Viewer::frame(const FrameTarget& target) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
@@ -193,6 +216,9 @@ void Viewer::frame(const FrameTarget& target) {
     config.pose = camera_.pose();
     config.width = std::max(1, static_cast<int>(std::lround(imageArea_.width * settings_.resolutionScale)));
     config.height = std::max(1, static_cast<int>(std::lround(imageArea_.height * settings_.resolutionScale)));
+    focusOnClick(io, config.pose, config.width, config.height);
+    config.pose.apertureRadius = settings_.apertureRadius;
+    config.pose.focusDistance = settings_.focusDistance;
     config.sides = settings_.sides();
     config.nextEventEstimation = settings_.nextEventEstimation;
     config.rouletteDepth = settings_.rouletteDepth;

@@ -338,6 +338,19 @@ void ViewerPanel::displayControls(DisplaySettings& display) {
     }
 }
 
+void ViewerPanel::lensControls(ViewerSettings& settings, const Scene& scene) {
+    // Up to a fifth of the scene's size: wider blurs everything but the focal plane away.
+    const float largest = 0.1f * glm::length(scene.boundsMax() - scene.boundsMin());
+    ImGui::SliderFloat("aperture radius", &settings.apertureRadius, 0.0f, std::max(largest, settings.apertureRadius),
+                       "%.3g", ImGuiSliderFlags_Logarithmic);
+    remember("aperture radius");
+    settings.apertureRadius = std::max(settings.apertureRadius, 0.0f);
+    ImGui::InputFloat("focus distance", &settings.focusDistance, 0.0f, 0.0f, settings.focusDistance > 0.0f ? "%.4g" : "target");
+    remember("focus distance");
+    settings.focusDistance = std::max(settings.focusDistance, 0.0f);
+    ImGui::TextDisabled("ctrl + click the image: focus there");
+}
+
 void ViewerPanel::browseButton(const char* label, const char* name, Browsing purpose) {
     if (ImGui::Button((std::string(label) + "##" + name).c_str())) {
         browsing_ = purpose;
@@ -443,6 +456,7 @@ void ViewerPanel::contents(ViewerSettings& settings, const WorkerSnapshot* snaps
         }
         if (tab("Display")) {
             displayControls(settings.display);
+            lensControls(settings, scene);
             ImGui::EndTabItem();
         }
         if (tab("Files")) {

@@ -49,6 +49,10 @@ struct ViewerSettings {
     float noiseThreshold = 0.0f;  // adaptive sampling's relative standard error; 0: off
     int targetSpp = 0;            // 0: no limit
     float targetSeconds = 0.0f;   // render time; 0: no limit
+    // The camera's thin lens (camera.h): aperture radius (0: a pinhole) and focus distance (0:
+    // the orbit's target), each scene's own when it opens.
+    float apertureRadius = 0.0f;
+    float focusDistance = 0.0f;
     bool paused = false;
     DisplaySettings display;
     // Take display.exposure from the first whole image shown (io/auto_exposure.h).
@@ -150,6 +154,7 @@ private:
     void samplingControls(ViewerSettings& settings, const Scene& scene);
     void budgetControls(ViewerSettings& settings, PanelActions& actions);
     void displayControls(DisplaySettings& display);
+    void lensControls(ViewerSettings& settings, const Scene& scene);
     void fileControls(PanelActions& actions);
     // What the panel always shows at its top, above the tabs: the render's readouts, the load
     // line, the scene's load summary, note and warnings, and its environment.

@@ -86,6 +86,7 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
     // A pixel's paths share its streams (path_samples.h) when it gets more than one in this call
     // (the viewer renders the image's first step alone).
     const bool shareStreams = endStep - firstStep > 1;
+    const bool lens = camera_.hasLens();
     const int depth = settings_.integrator.depth;
     arena_->execute([&] {
         tbb::parallel_for(
@@ -143,7 +144,9 @@ void ProgressiveRenderer::renderSteps(AccumulationBuffer& buffer, uint32_t pass,
                                 batchSamples.emplace_back(settings_.seed, pixel, pass, step);
                             }
                             const glm::vec2 jitter = batchSamples.back().pixelJitter();
-                            cameraRays.push_back(camera_.generateRay(x, y, jitter));
+                            cameraRays.push_back(
+                                lens ? camera_.generateRay(x, y, jitter, batchSamples.back().lensPoint())
+                                     : camera_.generateRay(x, y, jitter));
                             imageHeights.push_back((static_cast<float>(y) + jitter.y) / static_cast<float>(height));
                             if (cameraRays.size() == PathIntegrator::kBatch) {
                                 traceBatch();

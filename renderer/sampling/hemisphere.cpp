@@ -22,7 +22,7 @@ glm::vec3 sampleUniformSphere(glm::vec2 u) {
     return {r * azimuth.x, r * azimuth.y, z};
 }
 
-glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
+glm::vec2 sampleConcentricDisk(glm::vec2 u) {
     const float a = 2.0f * u.x - 1.0f;
     const float b = 2.0f * u.y - 1.0f;
     float r = 0.0f;
@@ -36,10 +36,13 @@ glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
             phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
         }
     }
-    const float x = r * std::cos(phi);
-    const float y = r * std::sin(phi);
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
+    const glm::vec2 disk = sampleConcentricDisk(u);
     // z = sqrt(1 - r^2); the clamp absorbs rounding, and z = 0 only on the disk's rim.
-    return {x, y, std::sqrt(std::max(0.0f, 1.0f - x * x - y * y))};
+    return {disk.x, disk.y, std::sqrt(std::max(0.0f, 1.0f - disk.x * disk.x - disk.y * disk.y))};
 }
 
 }  // namespace strata

@@ -12,6 +12,7 @@ constexpr uint64_t kFirstBounceDimension = 1;
 // Tags of the pixel's low-discrepancy streams (and of strata24-qmc's per-stratum streams): each
 // value, folded in with the bounce, keys a stream of its own.
 constexpr uint64_t kPixelJitterTag = 0x6a6974746572ull;  // "jitter"
+constexpr uint64_t kLensTag = 0x6c656e73ull;             // "lens"
 constexpr uint64_t kLightTag = 0x6c69676874ull;          // "light"
 constexpr uint64_t kLobeTag = 0x6c6f6265ull;             // "lobe"
 constexpr uint64_t kRouletteTag = 0x726f756c6574ull;     // "roulet"
@@ -21,6 +22,7 @@ constexpr uint64_t kSequenceTag = 0x736f626f6cull;       // "sobol"
 PixelKeys::PixelKeys(uint64_t seed, uint64_t pixelIndex)
     : pixel(hashCombine(mixBits(seed), pixelIndex)),
       jitter(hashCombine(pixel, kPixelJitterTag)),
+      lens(hashCombine(pixel, kLensTag)),
       light(hashCombine(pixel, kLightTag)),
       lobe(hashCombine(pixel, kLobeTag)),
       roulette(hashCombine(pixel, kRouletteTag)),
@@ -74,6 +76,10 @@ glm::vec2 PathSamples::pixelJitter() const {
     // jitter at random (sobol.h); a shuffle here too would pair nothing more, and the jitter is
     // drawn for every path, however short.
     return (streams_ ? streams_->jitter() : SobolStream(keys_.jitter)).orderedPoint(pixelIndex_);
+}
+
+glm::vec2 PathSamples::lensPoint() const {
+    return (streams_ ? streams_->lens() : SobolStream(keys_.lens)).point(pixelIndex_);
 }
 
 glm::vec2 PathSamples::bouncePoint(int bounce) const {

@@ -3,7 +3,7 @@
 // a pure function of (seed, pixel, pass, step, bounce, dimension), which is what makes renders
 // bit-identical for any thread count.
 //
-// The pixel jitter, the light sample, the lobe sample and the roulette decision are stratified
+// The pixel jitter, the lens point, the light sample, the lobe sample and the roulette decision are stratified
 // over the pixel's paths: the pixel's path number n = 24 pass + step indexes a low-discrepancy
 // stream (sobol.h) of its own for each of these values at each bounce, Owen-scrambled with seeds
 // from (seed, pixel, value, bounce), and index-shuffled too, so that two streams pair their points
@@ -28,7 +28,7 @@ namespace strata {
 // The keys of one pixel's streams: hashes of (seed, pixel) with each value's tag folded in.
 struct PixelKeys {
     PixelKeys(uint64_t seed, uint64_t pixel);
-    uint64_t pixel, jitter, light, lobe, roulette, sequence;
+    uint64_t pixel, jitter, lens, light, lobe, roulette, sequence;
 };
 
 // The streams, the strata's shared point and the stratum schedule's keys that every path of one
@@ -52,6 +52,10 @@ public:
     const PassSchedule& schedule() const { return schedule_; }
     int cachedBounces() const { return cachedBounces_; }
     const SobolStream& jitter() const { return jitter_; }
+    const SobolStream& lens() const {
+        if (!lens_) lens_.emplace(keys_.lens);
+        return *lens_;
+    }
     // For bounce < cachedBounces().
     const SobolStream& light(int bounce) const { return stream(light_, keys_.light, bounce); }
     const SobolStream& lobe(int bounce) const { return stream(lobe_, keys_.lobe, bounce); }
@@ -94,6 +98,7 @@ private:
     PassSchedule schedule_;
     int cachedBounces_;
     SobolStream jitter_;
+    mutable std::optional<SobolStream> lens_;  // for a camera with a lens only
     ByBounce<SobolStream> light_, lobe_, roulette_;
     ByBounce<StratumStreamPoint> stratumStreamPoints_;
 };
@@ -106,6 +111,9 @@ public:
 
     // Sub-pixel position of the camera ray, uniform on [0,1)^2; a (0,2)-sequence over the pixel.
     glm::vec2 pixelJitter() const;
+    // The camera ray's point on the lens (camera.h), uniform on [0,1)^2; likewise, its stream
+    // shuffled, so that it pairs with the jitter at random.
+    glm::vec2 lensPoint() const;
     // The point in [0,1)^2 that the direction sampler maps onto the hemisphere (or onto a stratum)
     // at `bounce`. Uniform random, as in the paper; other point sets plug in here.
     glm::vec2 bouncePoint(int bounce) const;

@@ -79,6 +79,14 @@ CameraPose readPose(const json& root, const std::string& path) {
         throw Error(path + ": \"fov_y\" must be a number (degrees)");
     }
     pose.fovYDegrees = readFloat(*fov, "fov_y", path);
+    // The thin lens, optional (camera.h checks the values).
+    for (const auto& [key, value] : {std::pair{"aperture_radius", &pose.apertureRadius},
+                                     std::pair{"focus_distance", &pose.focusDistance}}) {
+        const auto it = root.find(key);
+        if (it == root.end()) continue;
+        if (!it->is_number()) throw Error(path + ": \"" + key + "\" must be a number");
+        *value = readFloat(*it, key, path);
+    }
     return pose;
 }
 

@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "film/accumulation_buffer.h"
@@ -107,4 +109,49 @@ TEST_CASE("renderer: a pass in groups of steps equals the pass step by step") {
     CHECK(grouped.completedPasses(0) == 1u);
     CHECK_THROWS_AS(b.renderSteps(grouped, 1, 5, 5), Error);
     CHECK_THROWS_AS(b.renderSteps(grouped, 1, 20, 25), Error);
+}
+
+TEST_CASE("renderer: a thin lens blurs an emitter off its focal plane over its circle of confusion, keeping its light") {
+    // A square emitter of radiance 1, 2 wide, at distance 10 from the camera, in the dark; depth
+    // 0, so a path sees 1 or 0. Focused at 20, a lens of radius 0.5 moves the square's image on
+    // the focal plane by the lens point's offset times 1 - 20/10: up to 0.5, which is 2.99
+    // pixels at 64 pixels over 2 x 20 tan 15 degrees.
+    MeshData mesh;
+    mesh.materials = {{"lamp", glm::vec3(0.0f), glm::vec3(1.0f)}};
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    mesh.triangleMaterials = {0, 0};
+    const Scene scene(mesh);
+    CameraPose pose{{0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 30.0f};
+    const RenderSettings settings{{0, SamplerKind::Uniform, false}, 7, 2};
+    const AccumulationBuffer pinhole = test::renderPasses(scene, Camera(pose, 64, 64), settings, 4);
+    pose.apertureRadius = 0.5f;
+    pose.focusDistance = 20.0f;
+    const AccumulationBuffer lens = test::renderPasses(scene, Camera(pose, 64, 64), settings, 4);
+    // The square's edges along the middle row, in pixel coordinates: 32 -+ 32 / (10 tan 15).
+    const double halfWidth = 32.0 / (10.0 * std::tan(15.0 * M_PI / 180.0));
+    const double blur = 0.5 * 32.0 / (20.0 * std::tan(15.0 * M_PI / 180.0));
+    CHECK(blur == doctest::Approx(2.986).epsilon(1e-3));
+    for (int x = 0; x < 64; ++x) {
+        const double distance = std::min(std::abs(x + 0.5 - (32.0 - halfWidth)), std::abs(x + 0.5 - (32.0 + halfWidth)));
+        const double sharp = pinhole.mean(32 * 64 + x).x;
+        const double blurred = lens.mean(32 * 64 + x).x;
+        CAPTURE(x);
+        CAPTURE(distance);
+        // Off the edges' pixels the pinhole sees all or nothing; off the circle of confusion the
+        // lens too, and within 2 pixels of an edge it sees part of the square at every pixel.
+        if (distance > 1.0) CHECK((sharp == 0.0 || sharp == 1.0));
+        if (distance > blur + 0.75) CHECK((blurred == 0.0 || blurred == 1.0));
+        if (distance < 2.0) CHECK((blurred > 0.0 && blurred < 1.0));
+    }
+    // Every lens point sees the square at the same size on the focal plane, so the image keeps
+    // its light: the image means agree within the errors of the two renders.
+    double difference = 0.0;
+    double variance = 0.0;
+    for (size_t i = 0; i < pinhole.pixelCount(); ++i) {
+        difference += lens.mean(i).x - pinhole.mean(i).x;
+        variance += std::pow(lens.passStandardError(i), 2) + std::pow(pinhole.passStandardError(i), 2);
+    }
+    CHECK(std::abs(difference) <= test::kSigmas * std::sqrt(variance));
+    CHECK(variance > 0.0);
 }

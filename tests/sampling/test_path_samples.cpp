@@ -1,5 +1,5 @@
-// The per-pixel low-discrepancy values of path_samples.h (pixel jitter, light sample, lobe sample,
-// roulette): each one uniform (so every path is unbiased), each one stratified over a pixel's
+// The per-pixel low-discrepancy values of path_samples.h (pixel jitter, lens point, light sample,
+// lobe sample, roulette): each one uniform (so every path is unbiased), each one stratified over a pixel's
 // first 2^m paths, and no two of them correlated.
 #include <doctest/doctest.h>
 
@@ -28,7 +28,9 @@ struct Value {
 std::vector<Value> streamValues() {
     std::vector<Value> values{
         {"jitter x", [](const PathSamples& s) { return s.pixelJitter().x; }},
-        {"jitter y", [](const PathSamples& s) { return s.pixelJitter().y; }}};
+        {"jitter y", [](const PathSamples& s) { return s.pixelJitter().y; }},
+        {"lens x", [](const PathSamples& s) { return s.lensPoint().x; }},
+        {"lens y", [](const PathSamples& s) { return s.lensPoint().y; }}};
     for (int bounce : {0, 3}) {
         const std::string at = " at bounce " + std::to_string(bounce);
         values.push_back({"light choice" + at, [bounce](const PathSamples& s) { return s.lightSample(bounce).x; }});
@@ -108,6 +110,7 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
     for (uint64_t pixel : {0u, 77u}) {
         for (int m = 1; m <= 10; ++m) {
             std::vector<std::array<double, 2>> jitter;
+            std::vector<std::array<double, 2>> lens;
             std::vector<std::array<double, 2>> lightPoint;
             std::vector<std::array<double, 3>> light;
             std::vector<std::array<double, 2>> lobePoint;
@@ -116,6 +119,7 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
             for (uint32_t n = 0; n < (1u << m); ++n) {
                 const PathSamples s = pathNumber(3, pixel, n);
                 jitter.push_back({s.pixelJitter().x, s.pixelJitter().y});
+                lens.push_back({s.lensPoint().x, s.lensPoint().y});
                 const glm::vec3 l = s.lightSample(2);
                 lightPoint.push_back({l.y, l.z});
                 // A single light's point alone is the same point, bit for bit.
@@ -128,6 +132,7 @@ TEST_CASE("path samples: a pixel's first 2^m paths stratify each value (nets)") 
             }
             INFO("pixel " << pixel << ", m " << m);
             CHECK(isNet<2>(jitter, m, 0));
+            CHECK(isNet<2>(lens, m, 0));
             CHECK(isNet<2>(lightPoint, m, 0));
             // The choice with the point: Sobol's first three dimensions have t = 1.
             CHECK(isNet<3>(light, m, 1));
@@ -209,6 +214,7 @@ TEST_CASE("path samples: from a pixel's shared streams they are the per-path num
                 const PathSamples fromShared(shared, step);
                 CHECK(fromShared.pixelKey() == alone.pixelKey());
                 CHECK(fromShared.pixelJitter() == alone.pixelJitter());
+                CHECK(fromShared.lensPoint() == alone.lensPoint());
                 for (int bounce = 0; bounce < 6; ++bounce) {
                     INFO("pixel " << pixel << ", pass " << pass << ", step " << step << ", bounce " << bounce);
                     CHECK(fromShared.lightSample(bounce) == alone.lightSample(bounce));

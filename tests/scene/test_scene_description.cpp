@@ -43,6 +43,20 @@ TEST_CASE("scene description: the camera, typed lights and the older point_light
     CHECK(d.files.empty());
 }
 
+TEST_CASE("scene description: the camera's thin lens, aperture_radius and focus_distance, is optional") {
+    const SceneDescription lens = parseSceneDescription(
+        "{" + kPoseFromOrigin + R"(,"aperture_radius":0.25,"focus_distance":12})", "s.json");
+    CHECK(lens.camera.pose.apertureRadius == 0.25f);
+    CHECK(lens.camera.pose.focusDistance == 12.0f);
+    const SceneDescription pinhole = parseSceneDescription("{" + kPoseFromOrigin + "}", "s.json");
+    CHECK(pinhole.camera.pose.apertureRadius == 0.0f);
+    CHECK(pinhole.camera.pose.focusDistance == 0.0f);
+    CHECK(descriptionError("{" + kPoseFromOrigin + R"(,"aperture_radius":"wide"})") ==
+          "s.json: \"aperture_radius\" must be a number");
+    CHECK(descriptionError("{" + kPoseFromOrigin + R"(,"focus_distance":-2})") ==
+          "s.json: focus_distance must be a finite number >= 0");
+}
+
 TEST_CASE("scene description: without the camera keys the camera is left to the scene's framing") {
     const SceneDescription lightsOnly = parseSceneDescription(
         R"({"width":8,"lights":[{"type":"point","position":[0,1,0],"intensity":[2,2,2]}]})", "s.json");

@@ -792,3 +792,43 @@ TEST_CASE("the display's exposure comes from the first whole image and then stay
     fixed.waitFor([](const WorkerSnapshot& s) { return !s.preview && s.spp >= 1; });
     CHECK(fixed.viewer.settings().display.exposure == 1.5f);
 }
+
+TEST_CASE("ctrl + click on the image focuses the lens on the surface there, and the lens reaches the worker") {
+    Harness h(smallSingleView());
+    ViewerSettings& settings = h.viewer.settings();
+    CHECK(settings.apertureRadius == 0.0f);  // the Cornell box's camera is a pinhole
+    settings.apertureRadius = 5.0f;
+    h.frame();
+    CHECK(h.viewer.workerConfig().pose.apertureRadius == 5.0f);
+    // A click a fifth of the way down the image's middle column: the pinhole ray through that
+    // pixel's centre finds the box's far side there, at its depth along the view.
+    const Viewport& area = h.viewer.imageArea();
+    const WorkerConfig& config = h.viewer.workerConfig();
+    CameraPose pinhole = config.pose;
+    pinhole.apertureRadius = 0.0f;
+    const Ray ray = Camera(pinhole, config.width, config.height)
+                        .generateRay(config.width / 2, config.height / 5, glm::vec2(0.5f));
+    const auto hit = config.scene->scene.intersect(ray);
+    REQUIRE(hit);
+    const float depth = hit->t * glm::dot(ray.direction, glm::normalize(pinhole.lookAt - pinhole.position));
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(static_cast<float>(area.x) + 0.5f * static_cast<float>(area.width) + 1.0f,
+                         (static_cast<float>(config.height / 5) + 0.5f) / static_cast<float>(config.height) *
+                             static_cast<float>(area.height));
+    io.KeyCtrl = true;
+    h.frame();
+    io.MouseDown[0] = true;
+    h.frame();
+    io.MouseDown[0] = false;
+    io.KeyCtrl = false;
+    h.frame();
+    CHECK(settings.focusDistance == doctest::Approx(depth).epsilon(1e-4));
+    CHECK(h.viewer.workerConfig().pose.focusDistance == settings.focusDistance);
+    // Without ctrl a click focuses nothing.
+    settings.focusDistance = 0.0f;
+    io.MouseDown[0] = true;
+    h.frame();
+    io.MouseDown[0] = false;
+    h.frame();
+    CHECK(settings.focusDistance == 0.0f);
+}
