@@ -22,11 +22,12 @@ constexpr uint64_t kSequenceTag = 0x736f626f6cull;       // "sobol"
 PixelKeys::PixelKeys(uint64_t seed, uint64_t pixelIndex)
     : pixel(hashCombine(mixBits(seed), pixelIndex)),
       jitter(hashCombine(pixel, kPixelJitterTag)),
-      lens(hashCombine(pixel, kLensTag)),
       light(hashCombine(pixel, kLightTag)),
       lobe(hashCombine(pixel, kLobeTag)),
       roulette(hashCombine(pixel, kRouletteTag)),
       sequence(hashCombine(pixel, kSequenceTag)) {}
+
+uint64_t PixelKeys::lens() const { return hashCombine(pixel, kLensTag); }
 
 uint64_t PixelStreams::streamKey(uint64_t valueKey, int bounce) {
     return hashCombine(valueKey, static_cast<uint64_t>(bounce));
@@ -79,7 +80,7 @@ glm::vec2 PathSamples::pixelJitter() const {
 }
 
 glm::vec2 PathSamples::lensPoint() const {
-    return (streams_ ? streams_->lens() : SobolStream(keys_.lens)).point(pixelIndex_);
+    return (streams_ ? streams_->lens() : SobolStream(keys_.lens())).point(pixelIndex_);
 }
 
 glm::vec2 PathSamples::bouncePoint(int bounce) const {

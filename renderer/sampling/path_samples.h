@@ -28,7 +28,9 @@ namespace strata {
 // The keys of one pixel's streams: hashes of (seed, pixel) with each value's tag folded in.
 struct PixelKeys {
     PixelKeys(uint64_t seed, uint64_t pixel);
-    uint64_t pixel, jitter, lens, light, lobe, roulette, sequence;
+    uint64_t pixel, jitter, light, lobe, roulette, sequence;
+    // The lens point's key, which only a camera with a lens asks for.
+    uint64_t lens() const;
 };
 
 // The streams, the strata's shared point and the stratum schedule's keys that every path of one
@@ -53,7 +55,7 @@ public:
     int cachedBounces() const { return cachedBounces_; }
     const SobolStream& jitter() const { return jitter_; }
     const SobolStream& lens() const {
-        if (!lens_) lens_.emplace(keys_.lens);
+        if (!lens_) lens_.emplace(keys_.lens());
         return *lens_;
     }
     // For bounce < cachedBounces().
