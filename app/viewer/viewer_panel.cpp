@@ -339,7 +339,7 @@ void ViewerPanel::displayControls(DisplaySettings& display) {
 }
 
 void ViewerPanel::lensControls(ViewerSettings& settings, const Scene& scene) {
-    // Up to a fifth of the scene's size: wider blurs everything but the focal plane away.
+    // Up to a tenth of the scene's diagonal: wider blurs everything but the focal plane away.
     const float largest = 0.1f * glm::length(scene.boundsMax() - scene.boundsMin());
     ImGui::SliderFloat("aperture radius", &settings.apertureRadius, 0.0f, std::max(largest, settings.apertureRadius),
                        "%.3g", ImGuiSliderFlags_Logarithmic);
