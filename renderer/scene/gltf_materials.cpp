@@ -71,7 +71,25 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
         gltf.warnOnce(where + ": image " + quote(name) + " is missing; using the factor alone");
         return nullptr;
     }
-    return textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
+    const auto decoded = textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
+    if (!decoded || texture.sampler < 0) return decoded;
+    // The sampler's wrap modes ("Samplers"); its filters are not read: every lookup is bilinear.
+    const tinygltf::Sampler& sampler = gltf.element(gltf.model.samplers, texture.sampler, where + ": sampler");
+    const auto wrapOf = [&](int mode, const char* axis) {
+        switch (mode) {
+            case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+            case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+            case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+            default:
+                gltf.warnOnce(where + ": sampler " + std::to_string(texture.sampler) + " has an unknown " + axis +
+                              " " + std::to_string(mode) + "; the texture repeats");
+                return TextureWrap::Repeat;
+        }
+    };
+    const TextureWrap u = wrapOf(sampler.wrapS, "wrapS");
+    const TextureWrap v = wrapOf(sampler.wrapT, "wrapT");
+    if (u == TextureWrap::Repeat && v == TextureWrap::Repeat) return decoded;
+    return std::make_shared<const Texture>(decoded->wrapped(u, v));
 }
 
 // A material extension's object, or null when the material does not have it.

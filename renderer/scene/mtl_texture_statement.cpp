@@ -65,6 +65,7 @@ std::optional<MtlTextureStatement> parseMtlTextureStatement(const std::vector<st
             if (value && std::isfinite(*value)) statement.bumpMultiplier = *value;
         }
         if (option == "-imfchan" && words[i].size() == 1) statement.channel = words[i].front();
+        if (option == "-clamp") statement.clamp = words[i] == "on";
         i += arguments;
     }
     if (i >= words.size()) return std::nullopt;

@@ -17,6 +17,7 @@ struct MtlTextureStatement {
     glm::vec2 offset{0.0f};     // -o u v
     glm::vec2 scale{1.0f};      // -s u v
     std::optional<char> channel;  // -imfchan r, g, b, m, l or z
+    bool clamp = false;           // -clamp on: the edge texels stretch out (TextureWrap::ClampToEdge)
     std::string unknownOption;  // the first option that is not the specification's, if any
 };
 

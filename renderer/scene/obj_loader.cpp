@@ -633,8 +633,8 @@ int channelOf(const MtlTextureStatement& statement, int otherwise) {
 //   map_Bump, bump  the same when the image's values are a normal map's (looksLikeNormalMap);
 //           a height map is not rendered (a warning).
 // The material's textures share one placement (-s and -o, uv_placement.h), the first used
-// texture's, with a warning for one that differs; other options are skipped (warnings). Returns
-// the placement.
+// texture's, with a warning for one that differs; -clamp on clamps a texture to its edges; other
+// options are skipped (warnings). Returns the placement.
 UvPlacement addTextures(Material& material, const MtlMaterial& source, const std::string& mtlName,
                         SceneTextures& textures, std::vector<std::string>& warnings) {
     UvPlacement placement;
@@ -648,6 +648,9 @@ UvPlacement addTextures(Material& material, const MtlMaterial& source, const std
         const bool colour = key == "map_Kd" || key == "map_Ke";
         auto texture = textures.file(file, colour ? TextureEncoding::Colour : TextureEncoding::Data, at);
         if (!texture) continue;
+        if (statement.clamp) {
+            texture = std::make_shared<const Texture>(texture->wrapped(TextureWrap::ClampToEdge, TextureWrap::ClampToEdge));
+        }
         if (key == "map_Kd") {
             material.textures.colour = texture;
         } else if (key == "map_Ke") {

@@ -1,5 +1,6 @@
 #include "textures/texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
 
@@ -11,6 +12,31 @@ namespace {
 int wrap(int i, int n) {
     const int r = i % n;
     return r < 0 ? r + n : r;
+}
+
+// The texel index in [0, n) that index i reads under `mode`.
+int wrapIndex(int i, int n, TextureWrap mode) {
+    switch (mode) {
+        case TextureWrap::Repeat: break;
+        case TextureWrap::ClampToEdge: return i < 0 ? 0 : i >= n ? n - 1 : i;
+        case TextureWrap::MirroredRepeat: {
+            const int m = wrap(i, 2 * n);
+            return m < n ? m : 2 * n - 1 - m;
+        }
+    }
+    return wrap(i, n);
+}
+
+// A texel coordinate (its floor) brought near [0, n) as `mode` reads it, so that int arithmetic
+// on it cannot overflow: whole periods taken off (n, or 2n mirrored), or clamped just outside.
+int reducedIndex(float floor, int n, TextureWrap mode) {
+    const auto size = static_cast<float>(n);
+    switch (mode) {
+        case TextureWrap::Repeat: break;
+        case TextureWrap::ClampToEdge: return static_cast<int>(std::clamp(floor, -1.0f, size));
+        case TextureWrap::MirroredRepeat: return static_cast<int>(std::fmod(floor, 2.0f * size));
+    }
+    return static_cast<int>(std::fmod(floor, size));
 }
 
 // code / 255 in float, as the division gives it.
@@ -48,14 +74,22 @@ const std::array<float, 256>& srgbDecodingTable() {
 }
 
 Texture::Texture(int width, int height, int channels, std::vector<float> texels)
-    : width_(width), height_(height), channels_(channels), floats_(std::move(texels)) {
-    requireMatchingSize(width, height, channels, floats_.size());
+    : width_(width),
+      height_(height),
+      channels_(channels),
+      floats_(std::make_shared<const std::vector<float>>(std::move(texels))),
+      floatTexels_(floats_->data()) {
+    requireMatchingSize(width, height, channels, floats_->size());
     computeStatistics();
 }
 
 Texture::Texture(int width, int height, int channels, std::vector<uint8_t> codes, TextureEncoding encoding)
-    : width_(width), height_(height), channels_(channels), codes_(std::move(codes)) {
-    requireMatchingSize(width, height, channels, codes_.size());
+    : width_(width),
+      height_(height),
+      channels_(channels),
+      codes_(std::make_shared<const std::vector<uint8_t>>(std::move(codes))),
+      codeTexels_(codes_->data()) {
+    requireMatchingSize(width, height, channels, codes_->size());
     // Grey and grey-alpha images have their colour in channel 0 only; the last of 2 or 4 is alpha.
     const int colourChannels = channels == 1 || channels == 3 ? channels : channels - 1;
     for (int c = 0; c < channels; ++c) {
@@ -80,10 +114,10 @@ void Texture::computeStatistics() {
 glm::vec4 Texture::texelAt(size_t texel) const {
     const size_t first = texel * static_cast<size_t>(channels_);
     float t[4];
-    if (codes_.empty()) {
-        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = floats_[first + c];
+    if (codeTexels_ == nullptr) {
+        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = floatTexels_[first + c];
     } else {
-        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = decoding_[c][codes_[first + c]];
+        for (size_t c = 0; c < static_cast<size_t>(channels_); ++c) t[c] = decoding_[c][codeTexels_[first + c]];
     }
     switch (channels_) {
         case 1: return {t[0], t[0], t[0], 1.0f};
@@ -93,9 +127,16 @@ glm::vec4 Texture::texelAt(size_t texel) const {
     }
 }
 
+Texture Texture::wrapped(TextureWrap u, TextureWrap v) const {
+    Texture copy = *this;
+    copy.wrapU_ = u;
+    copy.wrapV_ = v;
+    return copy;
+}
+
 glm::vec4 Texture::texel(int x, int y) const {
-    const auto row = static_cast<size_t>(wrap(y, height_));
-    return texelAt(row * static_cast<size_t>(width_) + static_cast<size_t>(wrap(x, width_)));
+    const auto row = static_cast<size_t>(wrapIndex(y, height_, wrapV_));
+    return texelAt(row * static_cast<size_t>(width_) + static_cast<size_t>(wrapIndex(x, width_, wrapU_)));
 }
 
 glm::vec4 Texture::lookup(glm::vec2 uv) const {
@@ -109,11 +150,17 @@ glm::vec4 Texture::lookup(glm::vec2 uv) const {
     const float y0 = std::floor(fy);
     const float tx = fx - x0;
     const float ty = fy - y0;
-    // Wrapped once here, so that the int arithmetic below cannot overflow.
-    const int x = wrap(static_cast<int>(std::fmod(x0, static_cast<float>(width_))), width_);
-    const int y = wrap(static_cast<int>(std::fmod(y0, static_cast<float>(height_))), height_);
-    return (1.0f - ty) * ((1.0f - tx) * texel(x, y) + tx * texel(x + 1, y)) +
-           ty * ((1.0f - tx) * texel(x, y + 1) + tx * texel(x + 1, y + 1));
+    // Reduced once here, so that the int arithmetic below cannot overflow; then the two columns
+    // and the two rows wrapped, each once.
+    const int x = reducedIndex(x0, width_, wrapU_);
+    const int y = reducedIndex(y0, height_, wrapV_);
+    const auto width = static_cast<size_t>(width_);
+    const auto left = static_cast<size_t>(wrapIndex(x, width_, wrapU_));
+    const auto right = static_cast<size_t>(wrapIndex(x + 1, width_, wrapU_));
+    const size_t top = static_cast<size_t>(wrapIndex(y, height_, wrapV_)) * width;
+    const size_t bottom = static_cast<size_t>(wrapIndex(y + 1, height_, wrapV_)) * width;
+    return (1.0f - ty) * ((1.0f - tx) * texelAt(top + left) + tx * texelAt(top + right)) +
+           ty * ((1.0f - tx) * texelAt(bottom + left) + tx * texelAt(bottom + right));
 }
 
 }  // namespace strata

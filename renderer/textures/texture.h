@@ -1,6 +1,7 @@
 #pragma once
-// A texture image as shading reads it: 1 to 4 channels, looked up by UV with bilinear filtering
-// and repeat wrap, each texel read as linear float.
+// A texture image as shading reads it: 1 to 4 channels, looked up by UV with bilinear filtering,
+// each texel read as linear float, and wrapped outside [0, 1) along each axis as its wrap mode
+// says (repeat unless a glTF sampler or MTL's -clamp says otherwise).
 //
 // Texels are stored as they came: 8-bit codes for images that hold 8 bits a channel (PNG, JPEG,
 // ...), decoded to linear values only when read, through a 256-entry table per channel; floats
@@ -14,6 +15,7 @@
 // point where a lookup returns it unblended.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -24,6 +26,13 @@ namespace strata {
 enum class TextureEncoding {
     Colour,  // RGB is sRGB-encoded (base colour, diffuse, emission); alpha is linear
     Data,    // every channel linear, code / 255 (coverage, normals, roughness/metallic)
+};
+
+// What a lookup outside [0, 1) reads along one axis (glTF's sampler wrap modes).
+enum class TextureWrap {
+    Repeat,          // the image tiles the plane
+    ClampToEdge,     // the edge texels stretch out (MTL's -clamp on)
+    MirroredRepeat,  // every other tile is the image mirrored
 };
 
 // The sRGB decoding of each 8-bit code (IEC 61966-2-1):
@@ -55,16 +64,21 @@ public:
     // srgbDecodingTable(), every other channel as code / 255.
     Texture(int width, int height, int channels, std::vector<uint8_t> codes, TextureEncoding encoding);
 
-    // The bilinearly filtered value at `uv`, repeating outside [0, 1): the blend of the four
-    // nearest texels, each read as linear float first.
+    // The same texels, shared, wrapped along u and v as given.
+    Texture wrapped(TextureWrap u, TextureWrap v) const;
+
+    // The bilinearly filtered value at `uv`: the blend of the four nearest texels, each read as
+    // linear float first, wrapped outside [0, 1).
     glm::vec4 lookup(glm::vec2 uv) const;
     // The texel at integer coordinates (wrapped), top row y = 0.
     glm::vec4 texel(int x, int y) const;
+    TextureWrap wrapU() const { return wrapU_; }
+    TextureWrap wrapV() const { return wrapV_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
     int channels() const { return channels_; }
-    TextureSize size() const { return {width_, height_, channels_, codes_.empty() ? 4 : 1}; }
+    TextureSize size() const { return {width_, height_, channels_, codes_ ? 1 : 4}; }
     // Mean and largest value over all texels, per channel (as a lookup widens them).
     const glm::vec4& mean() const { return mean_; }
     const glm::vec4& max() const { return max_; }
@@ -77,9 +91,14 @@ private:
     int width_;
     int height_;
     int channels_;
-    // One of the two holds the texels.
-    std::vector<float> floats_;
-    std::vector<uint8_t> codes_;
+    // One of the two holds the texels, which wrapped() copies share; read through the pointer
+    // beside it.
+    std::shared_ptr<const std::vector<float>> floats_;
+    std::shared_ptr<const std::vector<uint8_t>> codes_;
+    const float* floatTexels_ = nullptr;
+    const uint8_t* codeTexels_ = nullptr;
+    TextureWrap wrapU_ = TextureWrap::Repeat;
+    TextureWrap wrapV_ = TextureWrap::Repeat;
     // For codes_: each channel's code -> linear value table.
     std::array<const float*, 4> decoding_{};
     glm::vec4 mean_{0.0f};

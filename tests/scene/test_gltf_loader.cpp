@@ -517,6 +517,33 @@ TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, whic
     checkSameBsdf(printed, {0.5f, 0.5f}, expected);
 }
 
+TEST_CASE("gltf: a texture's sampler sets its wrap modes, an unknown one repeats with a warning") {
+    Model model;
+    addPngTextures(model, {{255, 0, 255, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}});
+    model.doc["samplers"] = json::array({{{"wrapS", 33071}, {"wrapT", 33648}}, {{"wrapS", 10497}, {"wrapT", 12345}}});
+    model.doc["textures"][0]["sampler"] = 0;
+    model.doc["textures"][1]["sampler"] = 1;
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 1}}}}},
+         {"emissiveTexture", {{"index", 2}}}, {"emissiveFactor", {1, 1, 1}}},
+    });
+    model.meshNode(triangleAtOneTexel(model, 0));
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    const MaterialTextures& maps = mesh.materials[0].textures;
+    REQUIRE(maps.colour);
+    CHECK(maps.colour->wrapU() == TextureWrap::ClampToEdge);
+    CHECK(maps.colour->wrapV() == TextureWrap::MirroredRepeat);
+    REQUIRE(maps.roughness);
+    CHECK(maps.roughness->wrapU() == TextureWrap::Repeat);
+    CHECK(maps.roughness->wrapV() == TextureWrap::Repeat);
+    REQUIRE(maps.emission);  // no sampler: repeat
+    CHECK(maps.emission->wrapU() == TextureWrap::Repeat);
+    CHECK(report.warnings == std::vector<std::string>{
+                                 "mem/model.gltf: material '' (0) metallicRoughnessTexture: sampler 1 has an unknown wrapT "
+                                 "12345; the texture repeats"});
+}
+
 TEST_CASE("gltf: KHR_materials_unlit shows the base colour and its texture, every other property dropped") {
     Model model;
     model.doc["extensionsUsed"] = {"KHR_materials_unlit", "KHR_materials_clearcoat"};

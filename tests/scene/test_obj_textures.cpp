@@ -114,12 +114,16 @@ TEST_CASE("an MTL's map_Pm and map_Pr vary metallic and roughness, each from the
     test::writeFile(dir / "quad.obj", kQuadObj);
     // Without Pm and Pr lines the textures give them whole: metallic is the green of the
     // quadrants, roughness their red (the first channel).
-    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Pm -imfchan g pbr.png\nmap_Pr pbr.png\n");
+    test::writeFile(dir / "mtl" / "quad.mtl", "newmtl quad\nKd 0.5 0.5 0.5\nmap_Pm -imfchan g -clamp on pbr.png\nmap_Pr pbr.png\n");
     writePng(dir / "mtl" / "pbr.png", 2, 2, 3, kQuadrants);
     const LoadedScene loaded = loadScene(dir / "quad.obj");
     CHECK(loaded.report.warnings.empty());
     const Material& m = loaded.scene.mesh().materials[0];
     REQUIRE(m.metallicRoughness);
+    // -clamp on clamps the one texture it is given on, not the other reference to the file.
+    REQUIRE(m.textures.metallic);
+    CHECK(m.textures.metallic->wrapU() == TextureWrap::ClampToEdge);
+    CHECK(m.textures.roughness->wrapU() == TextureWrap::Repeat);
     CHECK(m.textures.metallicChannel == 1);
     CHECK(m.textures.roughnessChannel == 0);
     const MaterialTable table(loaded.scene.mesh().materials);

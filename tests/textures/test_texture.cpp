@@ -97,6 +97,38 @@ TEST_CASE("texture lookups blend bilinearly and wrap across the edges") {
     CHECK(t.lookup({0.375f, 0.75f}).x == doctest::Approx(0.25));
 }
 
+TEST_CASE("texture wrap modes: repeat tiles, clamp stretches the edge texels, mirror reflects every other tile") {
+    // One row of two texels, 0 and 1, centres at u = 0.25 and 0.75.
+    const Texture repeat(2, 1, 1, {0.0f, 1.0f});
+    const Texture clamp = repeat.wrapped(TextureWrap::ClampToEdge, TextureWrap::ClampToEdge);
+    const Texture mirror = repeat.wrapped(TextureWrap::MirroredRepeat, TextureWrap::MirroredRepeat);
+    CHECK(clamp.wrapU() == TextureWrap::ClampToEdge);
+    CHECK(repeat.wrapU() == TextureWrap::Repeat);  // the original keeps its own
+    const auto at = [](const Texture& t, float u) { return t.lookup({u, 0.5f}).x; };
+    // Inside, between the centres, all three blend alike.
+    for (const Texture* t : {&repeat, &clamp, &mirror}) CHECK(at(*t, 0.5f) == doctest::Approx(0.5));
+    // At u = 0 repeat blends with the far edge, clamp and mirror read the edge texel.
+    CHECK(at(repeat, 0.0f) == doctest::Approx(0.5));
+    CHECK(at(clamp, 0.0f) == 0.0f);
+    CHECK(at(mirror, 0.0f) == 0.0f);
+    // Past the image: repeat reads the next tile, clamp the edge, mirror the tile reflected.
+    CHECK(at(repeat, 1.25f) == doctest::Approx(0.0));
+    CHECK(at(clamp, 1.25f) == 1.0f);
+    CHECK(at(clamp, -3.0f) == 0.0f);
+    CHECK(at(clamp, 1e8f) == 1.0f);
+    CHECK(at(mirror, 1.25f) == doctest::Approx(1.0));   // as u = 0.75
+    CHECK(at(mirror, 1.625f) == doctest::Approx(0.25));  // as u = 0.375
+    CHECK(at(mirror, -0.25f) == doctest::Approx(0.0));  // as u = 0.25
+    CHECK(at(mirror, 2.25f) == doctest::Approx(0.0));   // a whole mirrored period on
+    // v likewise, each axis its own: two rows, 0 at the top, 2 at the bottom.
+    const Texture rows = Texture(1, 2, 1, {0.0f, 2.0f}).wrapped(TextureWrap::Repeat, TextureWrap::ClampToEdge);
+    CHECK(rows.lookup({5.3f, 1.5f}).x == 0.0f);
+    CHECK(rows.lookup({-0.7f, -2.0f}).x == 2.0f);
+    // The copies share the texels: statistics and sizes are the original's.
+    CHECK(clamp.mean() == repeat.mean());
+    CHECK(clamp.size().bytes() == repeat.size().bytes());
+}
+
 TEST_CASE("texture statistics and channel layouts") {
     const Texture t = twoByTwo();
     CHECK(t.mean().x == doctest::Approx(1.5));
