@@ -73,7 +73,9 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
     }
     const auto decoded = textures.bytes(name, gltf.images[source], encoding, gltf.path + ": " + where);
     if (!decoded || texture.sampler < 0) return decoded;
-    // The sampler's wrap modes ("Samplers"); its filters are not read: every lookup is bilinear.
+    // The sampler's wrap modes and magnification filter ("Samplers"): NEAREST keeps pixel art's
+    // texels square, as Blender's importer does (minification has no meaning without ray
+    // footprints: every other lookup is bilinear).
     const tinygltf::Sampler& sampler = gltf.element(gltf.model.samplers, texture.sampler, where + ": sampler");
     const auto wrapOf = [&](int mode, const char* axis) {
         switch (mode) {
@@ -86,10 +88,10 @@ std::shared_ptr<const Texture> textureOf(GltfModel& gltf, SceneTextures& texture
                 return TextureWrap::Repeat;
         }
     };
-    const TextureWrap u = wrapOf(sampler.wrapS, "wrapS");
-    const TextureWrap v = wrapOf(sampler.wrapT, "wrapT");
-    if (u == TextureWrap::Repeat && v == TextureWrap::Repeat) return decoded;
-    return std::make_shared<const Texture>(decoded->wrapped(u, v));
+    const TextureSampling sampling{wrapOf(sampler.wrapS, "wrapS"), wrapOf(sampler.wrapT, "wrapT"),
+                                   sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST};
+    if (sampling == TextureSampling{}) return decoded;
+    return std::make_shared<const Texture>(decoded->sampled(sampling));
 }
 
 // A material extension's object, or null when the material does not have it.

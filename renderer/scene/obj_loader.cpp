@@ -649,7 +649,8 @@ UvPlacement addTextures(Material& material, const MtlMaterial& source, const std
         auto texture = textures.file(file, colour ? TextureEncoding::Colour : TextureEncoding::Data, at);
         if (!texture) continue;
         if (statement.clamp) {
-            texture = std::make_shared<const Texture>(texture->wrapped(TextureWrap::ClampToEdge, TextureWrap::ClampToEdge));
+            texture = std::make_shared<const Texture>(
+                texture->sampled({TextureWrap::ClampToEdge, TextureWrap::ClampToEdge, false}));
         }
         if (key == "map_Kd") {
             material.textures.colour = texture;

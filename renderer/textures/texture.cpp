@@ -127,16 +127,15 @@ glm::vec4 Texture::texelAt(size_t texel) const {
     }
 }
 
-Texture Texture::wrapped(TextureWrap u, TextureWrap v) const {
+Texture Texture::sampled(const TextureSampling& sampling) const {
     Texture copy = *this;
-    copy.wrapU_ = u;
-    copy.wrapV_ = v;
+    copy.sampling_ = sampling;
     return copy;
 }
 
 glm::vec4 Texture::texel(int x, int y) const {
-    const auto row = static_cast<size_t>(wrapIndex(y, height_, wrapV_));
-    return texelAt(row * static_cast<size_t>(width_) + static_cast<size_t>(wrapIndex(x, width_, wrapU_)));
+    const auto row = static_cast<size_t>(wrapIndex(y, height_, sampling_.v));
+    return texelAt(row * static_cast<size_t>(width_) + static_cast<size_t>(wrapIndex(x, width_, sampling_.u)));
 }
 
 glm::vec4 Texture::lookup(glm::vec2 uv) const {
@@ -146,19 +145,24 @@ glm::vec4 Texture::lookup(glm::vec2 uv) const {
     const float fx = uv.x * static_cast<float>(width_) - 0.5f;
     const float fy = (1.0f - uv.y) * static_cast<float>(height_) - 0.5f;
     if (!(std::abs(fx) < 1e9f && std::abs(fy) < 1e9f)) return texel(0, 0);
+    if (sampling_.nearest) {
+        // The texel whose square holds uv: the one whose centre is nearest.
+        return texel(reducedIndex(std::floor(fx + 0.5f), width_, sampling_.u),
+                     reducedIndex(std::floor(fy + 0.5f), height_, sampling_.v));
+    }
     const float x0 = std::floor(fx);
     const float y0 = std::floor(fy);
     const float tx = fx - x0;
     const float ty = fy - y0;
     // Reduced once here, so that the int arithmetic below cannot overflow; then the two columns
     // and the two rows wrapped, each once.
-    const int x = reducedIndex(x0, width_, wrapU_);
-    const int y = reducedIndex(y0, height_, wrapV_);
+    const int x = reducedIndex(x0, width_, sampling_.u);
+    const int y = reducedIndex(y0, height_, sampling_.v);
     const auto width = static_cast<size_t>(width_);
-    const auto left = static_cast<size_t>(wrapIndex(x, width_, wrapU_));
-    const auto right = static_cast<size_t>(wrapIndex(x + 1, width_, wrapU_));
-    const size_t top = static_cast<size_t>(wrapIndex(y, height_, wrapV_)) * width;
-    const size_t bottom = static_cast<size_t>(wrapIndex(y + 1, height_, wrapV_)) * width;
+    const auto left = static_cast<size_t>(wrapIndex(x, width_, sampling_.u));
+    const auto right = static_cast<size_t>(wrapIndex(x + 1, width_, sampling_.u));
+    const size_t top = static_cast<size_t>(wrapIndex(y, height_, sampling_.v)) * width;
+    const size_t bottom = static_cast<size_t>(wrapIndex(y + 1, height_, sampling_.v)) * width;
     return (1.0f - ty) * ((1.0f - tx) * texelAt(top + left) + tx * texelAt(top + right)) +
            ty * ((1.0f - tx) * texelAt(bottom + left) + tx * texelAt(bottom + right));
 }

@@ -1,7 +1,8 @@
 #pragma once
-// A texture image as shading reads it: 1 to 4 channels, looked up by UV with bilinear filtering,
-// each texel read as linear float, and wrapped outside [0, 1) along each axis as its wrap mode
-// says (repeat unless a glTF sampler or MTL's -clamp says otherwise).
+// A texture image as shading reads it: 1 to 4 channels, looked up by UV with bilinear filtering
+// (or the nearest texel, where a glTF sampler asks for it), each texel read as linear float, and
+// wrapped outside [0, 1) along each axis as its wrap mode says (repeat unless a glTF sampler or
+// MTL's -clamp says otherwise).
 //
 // Texels are stored as they came: 8-bit codes for images that hold 8 bits a channel (PNG, JPEG,
 // ...), decoded to linear values only when read, through a 256-entry table per channel; floats
@@ -35,6 +36,16 @@ enum class TextureWrap {
     MirroredRepeat,  // every other tile is the image mirrored
 };
 
+// How a texture is looked up: its wrap modes along u and v, and whether it reads the nearest
+// texel instead of blending the four nearest (glTF's magFilter NEAREST: pixel art).
+struct TextureSampling {
+    TextureWrap u = TextureWrap::Repeat;
+    TextureWrap v = TextureWrap::Repeat;
+    bool nearest = false;
+
+    bool operator==(const TextureSampling&) const = default;
+};
+
 // The sRGB decoding of each 8-bit code (IEC 61966-2-1):
 // c / 12.92 for c = code / 255 <= 0.04045, else ((c + 0.055) / 1.055)^2.4.
 const std::array<float, 256>& srgbDecodingTable();
@@ -64,16 +75,15 @@ public:
     // srgbDecodingTable(), every other channel as code / 255.
     Texture(int width, int height, int channels, std::vector<uint8_t> codes, TextureEncoding encoding);
 
-    // The same texels, shared, wrapped along u and v as given.
-    Texture wrapped(TextureWrap u, TextureWrap v) const;
+    // The same texels, shared, looked up as `sampling` says.
+    Texture sampled(const TextureSampling& sampling) const;
 
-    // The bilinearly filtered value at `uv`: the blend of the four nearest texels, each read as
-    // linear float first, wrapped outside [0, 1).
+    // The value at `uv`: the bilinear blend of the four nearest texels, each read as linear float
+    // first (or the nearest texel alone), wrapped outside [0, 1).
     glm::vec4 lookup(glm::vec2 uv) const;
     // The texel at integer coordinates (wrapped), top row y = 0.
     glm::vec4 texel(int x, int y) const;
-    TextureWrap wrapU() const { return wrapU_; }
-    TextureWrap wrapV() const { return wrapV_; }
+    const TextureSampling& sampling() const { return sampling_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -91,14 +101,13 @@ private:
     int width_;
     int height_;
     int channels_;
-    // One of the two holds the texels, which wrapped() copies share; read through the pointer
+    // One of the two holds the texels, which sampled() copies share; read through the pointer
     // beside it.
     std::shared_ptr<const std::vector<float>> floats_;
     std::shared_ptr<const std::vector<uint8_t>> codes_;
     const float* floatTexels_ = nullptr;
     const uint8_t* codeTexels_ = nullptr;
-    TextureWrap wrapU_ = TextureWrap::Repeat;
-    TextureWrap wrapV_ = TextureWrap::Repeat;
+    TextureSampling sampling_;
     // For codes_: each channel's code -> linear value table.
     std::array<const float*, 4> decoding_{};
     glm::vec4 mean_{0.0f};

@@ -517,10 +517,11 @@ TEST_CASE("gltf: KHR_materials_sheen's factors and textures onto the sheen, whic
     checkSameBsdf(printed, {0.5f, 0.5f}, expected);
 }
 
-TEST_CASE("gltf: a texture's sampler sets its wrap modes, an unknown one repeats with a warning") {
+TEST_CASE("gltf: a texture's sampler sets its wrap modes and nearest filter, an unknown mode repeats with a warning") {
     Model model;
     addPngTextures(model, {{255, 0, 255, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}});
-    model.doc["samplers"] = json::array({{{"wrapS", 33071}, {"wrapT", 33648}}, {{"wrapS", 10497}, {"wrapT", 12345}}});
+    model.doc["samplers"] = json::array({{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}},
+                                         {{"wrapS", 10497}, {"wrapT", 12345}, {"magFilter", 9729}}});
     model.doc["textures"][0]["sampler"] = 0;
     model.doc["textures"][1]["sampler"] = 1;
     model.doc["materials"] = json::array({
@@ -532,13 +533,15 @@ TEST_CASE("gltf: a texture's sampler sets its wrap modes, an unknown one repeats
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     const MaterialTextures& maps = mesh.materials[0].textures;
     REQUIRE(maps.colour);
-    CHECK(maps.colour->wrapU() == TextureWrap::ClampToEdge);
-    CHECK(maps.colour->wrapV() == TextureWrap::MirroredRepeat);
+    CHECK(maps.colour->sampling().u == TextureWrap::ClampToEdge);
+    CHECK(maps.colour->sampling().v == TextureWrap::MirroredRepeat);
+    CHECK(maps.colour->sampling().nearest);  // magFilter NEAREST
+    CHECK_FALSE(maps.roughness->sampling().nearest);  // LINEAR
     REQUIRE(maps.roughness);
-    CHECK(maps.roughness->wrapU() == TextureWrap::Repeat);
-    CHECK(maps.roughness->wrapV() == TextureWrap::Repeat);
+    CHECK(maps.roughness->sampling().u == TextureWrap::Repeat);
+    CHECK(maps.roughness->sampling().v == TextureWrap::Repeat);
     REQUIRE(maps.emission);  // no sampler: repeat
-    CHECK(maps.emission->wrapU() == TextureWrap::Repeat);
+    CHECK(maps.emission->sampling().u == TextureWrap::Repeat);
     CHECK(report.warnings == std::vector<std::string>{
                                  "mem/model.gltf: material '' (0) metallicRoughnessTexture: sampler 1 has an unknown wrapT "
                                  "12345; the texture repeats"});

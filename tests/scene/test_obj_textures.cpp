@@ -122,8 +122,8 @@ TEST_CASE("an MTL's map_Pm and map_Pr vary metallic and roughness, each from the
     REQUIRE(m.metallicRoughness);
     // -clamp on clamps the one texture it is given on, not the other reference to the file.
     REQUIRE(m.textures.metallic);
-    CHECK(m.textures.metallic->wrapU() == TextureWrap::ClampToEdge);
-    CHECK(m.textures.roughness->wrapU() == TextureWrap::Repeat);
+    CHECK(m.textures.metallic->sampling().u == TextureWrap::ClampToEdge);
+    CHECK(m.textures.roughness->sampling().u == TextureWrap::Repeat);
     CHECK(m.textures.metallicChannel == 1);
     CHECK(m.textures.roughnessChannel == 0);
     const MaterialTable table(loaded.scene.mesh().materials);

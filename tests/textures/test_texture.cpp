@@ -100,10 +100,10 @@ TEST_CASE("texture lookups blend bilinearly and wrap across the edges") {
 TEST_CASE("texture wrap modes: repeat tiles, clamp stretches the edge texels, mirror reflects every other tile") {
     // One row of two texels, 0 and 1, centres at u = 0.25 and 0.75.
     const Texture repeat(2, 1, 1, {0.0f, 1.0f});
-    const Texture clamp = repeat.wrapped(TextureWrap::ClampToEdge, TextureWrap::ClampToEdge);
-    const Texture mirror = repeat.wrapped(TextureWrap::MirroredRepeat, TextureWrap::MirroredRepeat);
-    CHECK(clamp.wrapU() == TextureWrap::ClampToEdge);
-    CHECK(repeat.wrapU() == TextureWrap::Repeat);  // the original keeps its own
+    const Texture clamp = repeat.sampled({TextureWrap::ClampToEdge, TextureWrap::ClampToEdge, false});
+    const Texture mirror = repeat.sampled({TextureWrap::MirroredRepeat, TextureWrap::MirroredRepeat, false});
+    CHECK(clamp.sampling().u == TextureWrap::ClampToEdge);
+    CHECK(repeat.sampling().u == TextureWrap::Repeat);  // the original keeps its own
     const auto at = [](const Texture& t, float u) { return t.lookup({u, 0.5f}).x; };
     // Inside, between the centres, all three blend alike.
     for (const Texture* t : {&repeat, &clamp, &mirror}) CHECK(at(*t, 0.5f) == doctest::Approx(0.5));
@@ -121,12 +121,27 @@ TEST_CASE("texture wrap modes: repeat tiles, clamp stretches the edge texels, mi
     CHECK(at(mirror, -0.25f) == doctest::Approx(0.0));  // as u = 0.25
     CHECK(at(mirror, 2.25f) == doctest::Approx(0.0));   // a whole mirrored period on
     // v likewise, each axis its own: two rows, 0 at the top, 2 at the bottom.
-    const Texture rows = Texture(1, 2, 1, {0.0f, 2.0f}).wrapped(TextureWrap::Repeat, TextureWrap::ClampToEdge);
+    const Texture rows = Texture(1, 2, 1, {0.0f, 2.0f}).sampled({TextureWrap::Repeat, TextureWrap::ClampToEdge, false});
     CHECK(rows.lookup({5.3f, 1.5f}).x == 0.0f);
     CHECK(rows.lookup({-0.7f, -2.0f}).x == 2.0f);
     // The copies share the texels: statistics and sizes are the original's.
     CHECK(clamp.mean() == repeat.mean());
     CHECK(clamp.size().bytes() == repeat.size().bytes());
+}
+
+TEST_CASE("a nearest-texel texture reads the texel whose square holds uv, wrapped as its modes say") {
+    const Texture t = twoByTwo().sampled({TextureWrap::Repeat, TextureWrap::ClampToEdge, true});
+    // Top row 0, 1; bottom row 2, 3 (v up from the bottom row).
+    CHECK(t.lookup({0.1f, 0.9f}).x == 0.0f);
+    CHECK(t.lookup({0.49f, 0.51f}).x == 0.0f);
+    CHECK(t.lookup({0.51f, 0.51f}).x == 1.0f);
+    CHECK(t.lookup({0.5f, 0.5f}).x == 3.0f);  // a square's lower-left corner belongs to it
+    CHECK(t.lookup({0.9f, 0.1f}).x == 3.0f);
+    // u repeats, v clamps.
+    CHECK(t.lookup({1.1f, 0.9f}).x == 0.0f);
+    CHECK(t.lookup({-0.4f, 0.9f}).x == 1.0f);
+    CHECK(t.lookup({0.1f, 7.0f}).x == 0.0f);
+    CHECK(t.lookup({0.1f, -7.0f}).x == 2.0f);
 }
 
 TEST_CASE("texture statistics and channel layouts") {
