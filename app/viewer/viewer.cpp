@@ -47,8 +47,7 @@ Viewer::Viewer(std::shared_ptr<LoadedScene> scene, const ViewerSettings& setting
       reference_(std::move(reference)),
       settings_(settings),
       camera_(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax()) {
-    settings_.apertureRadius = scene_->settings.pose.apertureRadius;
-    settings_.focusDistance = scene_->settings.pose.focusDistance;
+    takeSceneLens();
     panel_.setScenePath(scene_->scenePath().string());
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
     panel_.setEnvironmentMapChoices(studioLightMaps());
@@ -102,8 +101,7 @@ void Viewer::showScene(std::shared_ptr<LoadedScene> scene, double seconds) {
     }
     scene_ = std::move(scene);
     camera_ = CameraController(scene_->settings.pose, scene_->scene.boundsMin(), scene_->scene.boundsMax());
-    settings_.apertureRadius = scene_->settings.pose.apertureRadius;
-    settings_.focusDistance = scene_->settings.pose.focusDistance;
+    takeSceneLens();
     const std::string path = scene_->scenePath().string();
     panel_.setScenePath(path);
     panel_.setSceneReport(describeScene(*scene_), describeWarnings(*scene_));
@@ -167,6 +165,11 @@ void Viewer::handleDivider(const ImGuiIO& io) {
     if (!io.WantCaptureMouse && std::abs(io.MousePos.x - dividerX) <= kDividerGrabPixels) {
         ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
     }
+}
+
+void Viewer::takeSceneLens() {
+    settings_.apertureRadius = scene_->settings.pose.apertureRadius;
+    settings_.focusDistance = scene_->settings.pose.focusDistance;
 }
 
 void Viewer::focusOnClick(const ImGuiIO& io, const CameraPose& pose, int width, int height) {

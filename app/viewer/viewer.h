@@ -69,6 +69,8 @@ private:
     void showScene(std::shared_ptr<LoadedScene> scene, double seconds);
     void useEnvironmentMap(const EnvironmentMapFile& file, const std::filesystem::path& exrPath);
     void handleDivider(const ImGuiIO& io);
+    // The open scene's camera lens, into the settings the panel edits.
+    void takeSceneLens();
     // Ctrl + left click on the image: the lens focuses on the surface under the cursor.
     void focusOnClick(const ImGuiIO& io, const CameraPose& pose, int width, int height);
     void drawOverlays();

@@ -390,8 +390,10 @@ struct MtlMaterial {
 std::string materialToken(size_t index) { return "m" + std::to_string(index); }
 
 // Whether Blender's exporter wrote an MTL: its first line says so ("# Blender 3.4.1 MTL File:
-// 'None'", "# Blender MTL File: 'scene.blend'" before 3.2).
-bool isWrittenByBlender(std::string_view text) {
+// 'None'", "# Blender MTL File: 'scene.blend'" before 3.2), read as forEachLine reads the file.
+bool isWrittenByBlender(const std::string& file, const std::string& name) {
+    std::string decoded;
+    const std::string_view text = utf8TextOf(file, name, decoded);
     const std::string_view line = text.substr(0, text.find('\n'));
     return line.starts_with("# Blender ") && line.find(" MTL File") != std::string_view::npos;
 }
@@ -404,7 +406,7 @@ bool isWrittenByBlender(std::string_view text) {
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
              std::string& tinyobjText, std::vector<std::string>& warnings) {
     const size_t first = materials.size();
-    const bool blender = isWrittenByBlender(text);
+    const bool blender = isWrittenByBlender(text, name);
     forEachLine(text, name, [&](size_t line, const std::vector<std::string_view>& words) {
         const std::string_view key = words[0];
         if (key == "newmtl") {

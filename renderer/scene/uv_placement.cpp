@@ -1,11 +1,13 @@
 #include "scene/uv_placement.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 
 namespace strata {
 
 void placeUvs(MeshData& mesh, const std::vector<UvPlacement>& placements) {
+    if (std::all_of(placements.begin(), placements.end(), [](const UvPlacement& p) { return p.isIdentity(); })) return;
     // The index of each placed copy, by (material, shared vt): as many entries as copies made.
     std::unordered_map<uint64_t, uint32_t> copies;
     for (size_t t = 0; t < mesh.triangleUvs.size(); ++t) {

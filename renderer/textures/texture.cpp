@@ -29,14 +29,14 @@ int wrapIndex(int i, int n, TextureWrap mode) {
 
 // A texel coordinate (its floor) brought near [0, n) as `mode` reads it, so that int arithmetic
 // on it cannot overflow: whole periods taken off (n, or 2n mirrored), or clamped just outside.
-int reducedIndex(float floor, int n, TextureWrap mode) {
+int reducedIndex(float coordinate, int n, TextureWrap mode) {
     const auto size = static_cast<float>(n);
     switch (mode) {
         case TextureWrap::Repeat: break;
-        case TextureWrap::ClampToEdge: return static_cast<int>(std::clamp(floor, -1.0f, size));
-        case TextureWrap::MirroredRepeat: return static_cast<int>(std::fmod(floor, 2.0f * size));
+        case TextureWrap::ClampToEdge: return static_cast<int>(std::clamp(coordinate, -1.0f, size));
+        case TextureWrap::MirroredRepeat: return static_cast<int>(std::fmod(coordinate, 2.0f * size));
     }
-    return static_cast<int>(std::fmod(floor, size));
+    return static_cast<int>(std::fmod(coordinate, size));
 }
 
 // code / 255 in float, as the division gives it.

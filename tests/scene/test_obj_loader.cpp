@@ -606,9 +606,11 @@ TEST_CASE("obj: an MTL that Blender wrote is read as Blender's importer reads it
     const auto near = [](const glm::vec3& a, float b) {
         return glm::all(glm::lessThanEqual(glm::abs(a - glm::vec3(b)), glm::vec3(1e-6f)));
     };
-    // Blender 3.2 and later write their version; earlier exporters wrote none.
+    // Blender 3.2 and later write their version; earlier exporters wrote none. A byte-order mark
+    // is read past, as everywhere in the file.
     for (const char* header : {"# Blender 3.4.1 MTL File: 'None'\n# www.blender.org\n\n",
-                               "# Blender MTL File: 'scene.blend'\n# Material Count: 4\n\n"}) {
+                               "# Blender MTL File: 'scene.blend'\n# Material Count: 4\n\n",
+                               "\xEF\xBB\xBF# Blender 3.4.1 MTL File: 'None'\n"}) {
         const MeshData blender = parseObj(obj, "scene.obj", header + materials, "scene.mtl");
         REQUIRE(blender.materials.size() >= 4);
         const Material& plain = blender.materials[0];
