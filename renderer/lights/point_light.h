@@ -1,9 +1,23 @@
 #pragma once
 // An isotropic point light of intensity I (W/sr): a delta light, reached only by next-event
 // estimation, giving I / r^2 at distance r.
+#include <cmath>
+#include <glm/geometric.hpp>
+
 #include "lights/light.h"
 
 namespace strata {
+
+// The light that a point source of `intensity` at `position` gives `point`: I / r^2 along the
+// unit direction to it; none where the two coincide. Point and spot lights share it.
+inline std::optional<LightSample> pointSourceSample(const glm::vec3& position, const glm::vec3& intensity,
+                                                    const glm::vec3& point) {
+    const glm::vec3 toLight = position - point;
+    const float distanceSquared = glm::dot(toLight, toLight);
+    if (!(distanceSquared > 0.0f)) return std::nullopt;
+    const float distance = std::sqrt(distanceSquared);
+    return LightSample{toLight / distance, distance, intensity / distanceSquared, 0.0f, false};
+}
 
 class PointLight final : public Light {
 public:

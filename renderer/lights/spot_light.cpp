@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "lights/point_light.h"
 #include "util/constants.h"
 
 namespace strata {
@@ -22,14 +23,12 @@ float SpotLight::falloff(float cosTheta) const {
 }
 
 std::optional<LightSample> SpotLight::sample(const glm::vec3& point, glm::vec2 /*u*/) const {
-    const glm::vec3 toLight = position - point;
-    const float distanceSquared = glm::dot(toLight, toLight);
-    if (!(distanceSquared > 0.0f)) return std::nullopt;
-    const float distance = std::sqrt(distanceSquared);
-    const glm::vec3 direction = toLight / distance;
-    const float share = falloff(-glm::dot(direction, axis));
+    std::optional<LightSample> sample = pointSourceSample(position, intensity, point);
+    if (!sample) return std::nullopt;
+    const float share = falloff(-glm::dot(sample->direction, axis));
     if (!(share > 0.0f)) return std::nullopt;
-    return LightSample{direction, distance, intensity * (share / distanceSquared), 0.0f, false};
+    sample->radiance *= share;
+    return sample;
 }
 
 glm::vec3 SpotLight::power() const {
