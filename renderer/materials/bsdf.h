@@ -108,6 +108,15 @@ public:
     template <class M>
     const M* as() const { return std::get_if<M>(&model_); }
 
+    // Turns a clear coat's normal to `axis` (clear_coat.h); a model without a coat stays as it is.
+    void tiltCoat(const glm::vec3& axis) {
+        std::visit(
+            [&](auto& m) {
+                if constexpr (requires { m.tilt(axis); }) m.tilt(axis);
+            },
+            model_);
+    }
+
 private:
     bool mirrored(const glm::vec3& wo) const { return !isTransmission(flags_) && wo.z < 0.0f; }
     static glm::vec3 flipped(const glm::vec3& w) { return {w.x, w.y, -w.z}; }

@@ -67,6 +67,10 @@ struct MaterialTextures {
     // clearcoatRoughnessTexture).
     std::shared_ptr<const Texture> clearcoat;
     std::shared_ptr<const Texture> clearcoatRoughness;
+    // The coat's own tangent-space normal map, as `normal` (glTF clearcoatNormalTexture); without
+    // it the coat takes the vertex normals, whatever `normal` does to the base.
+    std::shared_ptr<const Texture> clearcoatNormal;
+    float clearcoatNormalScale = 1.0f;
     // RGB times the specular colour, A times the glossiness (glTF specularGlossinessTexture).
     std::shared_ptr<const Texture> specularGlossiness;
     // KHR_materials_specular: A times specularFactor (specularTexture), RGB times

@@ -113,7 +113,11 @@ MaterialTable::MaterialTable(const std::vector<Material>& materials) {
         // A texture can give a diffuse base where the constants have none (a metallic texture
         // under a metallic factor of 1), so a textured material is taken to read them.
         const bool readsDiffuseNumbers = textured || front.readsDiffuseNumbers() || back.readsDiffuseNumbers();
-        entries_.push_back({front, back, constants, absorptionOf(m), black, readsDiffuseNumbers, textured});
+        // Only the opaque models take the coat (build).
+        const bool coatHasOwnNormal = m.clearcoat > 0.0f && m.transmission <= 0.0f &&
+                                      (m.textures.normal || m.textures.clearcoatNormal);
+        entries_.push_back(
+            {front, back, constants, absorptionOf(m), black, readsDiffuseNumbers, textured, coatHasOwnNormal});
     }
 }
 

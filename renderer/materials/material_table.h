@@ -66,6 +66,9 @@ public:
     // (Bsdf::readsDiffuseNumbers), known before a hit's BSDF is built: a path tracer then draws
     // them only for the materials that read them.
     bool readsDiffuseNumbers(uint32_t material) const { return entries_[material].readsDiffuseNumbers; }
+    // Whether the material's clear coat has a normal of its own (Scene::coatNormal), which differs
+    // from the shading normal: the coat's own normal map, or the base's that the coat does not take.
+    bool coatHasOwnNormal(uint32_t material) const { return entries_[material].coatHasOwnNormal; }
     // The absorption coefficient (per unit length, per channel) inside the volume the material
     // bounds: 0 for all but a dielectric with KHR_materials_volume's attenuation.
     const glm::vec3& absorption(uint32_t material) const { return entries_[material].absorption; }
@@ -96,6 +99,7 @@ private:
         bool black;
         bool readsDiffuseNumbers;
         bool textured;  // a texture changes the BSDF from hit to hit
+        bool coatHasOwnNormal;
     };
     const SpecularLobe* lobeFor(float roughness);
     const SheenLobe* sheenLobeFor(float roughness);

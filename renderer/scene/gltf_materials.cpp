@@ -423,8 +423,14 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         maps.clearcoat = extensionTexture(gltf, textures, *e, "clearcoatTexture", name, TextureEncoding::Data);
         maps.clearcoatRoughness =
             extensionTexture(gltf, textures, *e, "clearcoatRoughnessTexture", name, TextureEncoding::Data);
-        if (e->Has("clearcoatNormalTexture")) {
-            gltf.warnOnce(where + ": clearcoatNormalTexture is not applied (the coat takes the base's normal)");
+        maps.clearcoatNormal =
+            extensionTexture(gltf, textures, *e, "clearcoatNormalTexture", name, TextureEncoding::Data);
+        if (maps.clearcoatNormal && e->Get("clearcoatNormalTexture").Has("scale")) {
+            const tinygltf::Value& scale = e->Get("clearcoatNormalTexture").Get("scale");
+            maps.clearcoatNormalScale = scale.IsNumber() ? static_cast<float>(scale.GetNumberAsDouble()) : NAN;
+            if (!std::isfinite(maps.clearcoatNormalScale)) {
+                gltf.fail(where + ": clearcoatNormalTexture scale is not a number in float range");
+            }
         }
     }
     // KHR_materials_sheen: a sheen over the layered model, under the coat (sheen.h).

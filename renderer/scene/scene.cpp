@@ -561,16 +561,9 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     hit.normal.z = normal.z;
     hit.shadingNormal = hit.normal;
     hit.smooth = false;
-    if (!mesh_.triangleNormals.empty() && mesh_.triangleNormals[triangle] != kNoNormals) {
-        const auto& corners = mesh_.triangleNormals[triangle];
-        const glm::vec3 interpolated = b0 * mesh_.normals[corners[0]] + b1 * mesh_.normals[corners[1]] +
-                                       b2 * mesh_.normals[corners[2]];
-        const float length = glm::length(interpolated);
-        // Opposed vertex normals can cancel; the geometric normal is the only sensible answer.
-        if (length > 1e-6f) {
-            hit.shadingNormal = interpolated / length;
-            hit.smooth = true;
-        }
+    if (const std::optional<glm::vec3> interpolated = vertexNormalAt(triangle, b0, b1, b2)) {
+        hit.shadingNormal = *interpolated;
+        hit.smooth = true;
     }
     hit.uv = glm::vec2(0.0f);
     if (!mesh_.triangleUvs.empty() && mesh_.triangleUvs[triangle] != kNoUvs) {
@@ -594,6 +587,34 @@ SurfaceHit Scene::localSurface(const RayHit& rayHit) const {
     }
     hit.triangle = triangle;
     return hit;
+}
+
+std::optional<glm::vec3> Scene::vertexNormalAt(uint32_t triangle, float b0, float b1, float b2) const {
+    if (mesh_.triangleNormals.empty() || mesh_.triangleNormals[triangle] == kNoNormals) return std::nullopt;
+    const auto& corners = mesh_.triangleNormals[triangle];
+    const glm::vec3 interpolated =
+        b0 * mesh_.normals[corners[0]] + b1 * mesh_.normals[corners[1]] + b2 * mesh_.normals[corners[2]];
+    const float length = glm::length(interpolated);
+    // Opposed vertex normals can cancel; the geometric normal is the only sensible answer.
+    if (!(length > 1e-6f)) return std::nullopt;
+    return interpolated / length;
+}
+
+glm::vec3 Scene::coatNormal(const RayHit& rayHit, glm::vec2 uv) const {
+    const uint32_t triangle = rayHit.triangle;
+    glm::vec3 normal = vertexNormalAt(triangle, 1.0f - rayHit.u - rayHit.v, rayHit.u, rayHit.v)
+                           .value_or(triangles_[triangle].normal);
+    const MaterialTextures& textures = material(triangle).textures;
+    if (textures.clearcoatNormal && !mesh_.triangleUvs.empty() && mesh_.triangleUvs[triangle] != kNoUvs) {
+        const auto& tri = mesh_.triangles[triangle];
+        const auto tangents = surfaceTangents({mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]},
+                                              cornerUvs(mesh_, triangle));
+        if (tangents) {
+            normal = mappedNormal(*textures.clearcoatNormal, textures.clearcoatNormalScale, uv, normal, *tangents);
+        }
+    }
+    if (rayHit.placement == kNoPlacement) return normal;
+    return glm::normalize(placements_[rayHit.placement].normalToWorld * normal);
 }
 
 glm::vec3 Scene::smoothSurfaceLift(const RayHit& rayHit, bool front) const {

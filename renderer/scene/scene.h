@@ -113,6 +113,11 @@ public:
     // triangle's vertex normals describe (geometry/smooth_surface.h), on the triangle's front
     // side (`front`) or its back; zero on a triangle without vertex normals.
     glm::vec3 smoothSurfaceLift(const RayHit& hit, bool front) const;
+    // The normal of a clear coat at the hit (texture coordinates `uv`), in world coordinates and
+    // not yet turned toward the viewer: the vertex normals' (the geometric one without them) under
+    // the coat's own normal map, if any. A base's normal map does not reach the coat (glTF's
+    // KHR_materials_clearcoat).
+    glm::vec3 coatNormal(const RayHit& hit, glm::vec2 uv) const;
     // Whether anything blocks the open segment from origin to origin + direction * distance.
     bool occluded(const Ray& ray, float distance) const;
 
@@ -162,6 +167,9 @@ private:
                                 float v) const;
     // Attaches the triangles of `range` to `scene` as geometries 0 and 1.
     void attachTriangles(RTCScene scene, const TriangleRange& range);
+    // The triangle's vertex normals interpolated at barycentrics (b0, b1, b2), of unit length;
+    // empty without vertex normals or where they cancel.
+    std::optional<glm::vec3> vertexNormalAt(uint32_t triangle, float b0, float b1, float b2) const;
     // The surface record at a hit in the triangle's own coordinates.
     SurfaceHit localSurface(const RayHit& hit) const;
     static void placeInWorld(SurfaceHit& hit, const Placement& placement);

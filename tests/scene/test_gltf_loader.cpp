@@ -639,6 +639,57 @@ TEST_CASE("gltf: a camera ray through a MASK-ed texel sees what is behind it") {
     CHECK(seen(0.75f) == doctest::Approx(2.0f));  // through the cut-out half onto the emitter
 }
 
+TEST_CASE("gltf: a clear coat takes its own normal map, and not the base's") {
+    Model model;
+    // Two unit squares facing +z with vertex normals +z: the first's coat has no normal map, the
+    // second's has one of its own; both bases have the same normal map.
+    const int first = model.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0});
+    const int second = model.positions({2, 0, 0, 3, 0, 0, 3, 1, 0, 2, 0, 0, 3, 1, 0, 2, 1, 0});
+    const int normals = model.positions({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int uvs = model.accessor(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 1, 1, 0, 0, 0}, "VEC2", 5126, 6);
+    // The base's texel tilts the normal along one tangent, the coat's along the other:
+    // (0.6, 0, 0.8) and (0, 0.6, 0.8), 8 bits each.
+    model.doc["images"] = json::array({
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {204, 128, 230, 255}))}},
+        {{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {128, 204, 230, 255}))}},
+    });
+    model.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    model.doc["extensionsUsed"] = {"KHR_materials_clearcoat"};
+    model.doc["materials"] = json::array({
+        {{"normalTexture", {{"index", 0}}}, {"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}}}},
+        {{"normalTexture", {{"index", 0}}},
+         {"extensions",
+          {{"KHR_materials_clearcoat",
+            {{"clearcoatFactor", 1}, {"clearcoatNormalTexture", {{"index", 1}, {"scale", 0.5}}}}}}}},
+    });
+    model.meshNode({{"attributes", {{"POSITION", first}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+    model.meshNode({{"attributes", {{"POSITION", second}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}}}, {"material", 1}});
+    LoadReport report;
+    MeshData mesh = parse(model.gltf(), &report).mesh;
+    for (const std::string& warning : report.warnings) CHECK(warning.find("clearcoatNormalTexture") == std::string::npos);
+    REQUIRE(mesh.materials.size() == 2);
+    CHECK_FALSE(mesh.materials[0].textures.clearcoatNormal);
+    REQUIRE(mesh.materials[1].textures.clearcoatNormal);
+    CHECK(mesh.materials[1].textures.clearcoatNormalScale == 0.5f);
+    const Scene scene(std::move(mesh));
+    CHECK(scene.materials().coatHasOwnNormal(0));
+    CHECK(scene.materials().coatHasOwnNormal(1));
+    const auto normalsAt = [&](float x) {
+        const auto hit = scene.intersect(Ray{{x, 0.4f, 1.0f}, {0.0f, 0.0f, -1.0f}});
+        REQUIRE(hit);
+        return std::pair{scene.surface(*hit).shadingNormal, scene.coatNormal(*hit, scene.surface(*hit).uv)};
+    };
+    // The texel's 8-bit (0.6, 0, 0.8) is (0.6, 0, 0.804) decoded; 0.6 / |that| = 0.598.
+    const auto [base0, coat0] = normalsAt(0.6f);
+    CHECK(std::abs(base0.x) == doctest::Approx(0.598).epsilon(1e-2));
+    CHECK(coat0 == glm::vec3(0.0f, 0.0f, 1.0f));
+    // The coat's map at half scale: (0, 0.3, 0.804) normalised (the byte 128 decodes to 0.004).
+    const auto [base1, coat1] = normalsAt(2.6f);
+    CHECK(std::abs(base1.x) == doctest::Approx(0.598).epsilon(1e-2));
+    CHECK(std::abs(coat1.x) < 3e-3f);
+    CHECK(std::abs(coat1.y) == doctest::Approx(0.3 / std::sqrt(0.09 + 0.804 * 0.804)).epsilon(1e-2));
+}
+
 TEST_CASE("gltf: the first camera, from its node, looking down -Z") {
     Model model;
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}});
