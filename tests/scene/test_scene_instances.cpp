@@ -169,6 +169,7 @@ TEST_CASE("instances: a placed mesh traces and shades as its flattened copy, und
         // The front side (the normals' sense) as well as the direction: winding kept under mirrors.
         CHECK(glm::dot(sa.normal, sb.normal) > 0.99999f);
         CHECK(glm::dot(sa.shadingNormal, sb.shadingNormal) > 0.9999f);
+        CHECK(glm::dot(placed.coatNormal(*a, sa.uv), flat.coatNormal(*b, sb.uv)) > 0.9999f);
         CHECK(sa.smooth == sb.smooth);
         checkClose(glm::vec3(sa.uv, 0.0f), glm::vec3(sb.uv, 0.0f), 1e-4f);
         // A ray leaving the surface does not find it again.
