@@ -53,10 +53,15 @@ struct MaterialTextures {
     // RGB times Ke (MTL map_Ke, glTF emissiveTexture).
     std::shared_ptr<const Texture> emission;
     // Coverage: a hit where channel `coverageChannel` is below `alphaCutoff` is no hit at all
-    // (MTL map_d, glTF alphaMode MASK); the ray goes on through it (scene.h).
+    // (MTL map_d, glTF alphaMode MASK); the ray goes on through it (scene.h). A blended coverage
+    // (glTF alphaMode BLEND) is an opacity instead, times `opacity`: a ray goes on through with
+    // probability 1 - opacity (scene/cutout_filter.h), which renders, in expectation, the surface
+    // blended over what lies behind it, as Cycles renders a Principled BSDF's alpha.
     std::shared_ptr<const Texture> coverage;
     int coverageChannel = 0;
     float alphaCutoff = 0.5f;
+    bool blended = false;
+    float opacity = 1.0f;
     // A tangent-space normal map, RGB = (x, y, z) * 0.5 + 0.5, x along increasing u, y along
     // increasing v; x and y are scaled by `normalScale` (glTF normalTexture.scale).
     std::shared_ptr<const Texture> normal;
@@ -129,9 +134,13 @@ struct Material {
                textures.clearcoatRoughness || textures.specularGlossiness || textures.specular ||
                textures.specularColour || textures.sheenColour || textures.sheenRoughness;
     }
-    // Whether the hit at `uv` is cut out (no surface there).
-    bool cutOut(glm::vec2 uv) const {
-        return textures.coverage && textures.coverage->lookup(uv)[textures.coverageChannel] < textures.alphaCutoff;
+    // Whether the hit at `uv` is cut out (no surface there): below the cutoff, or, blended, at an
+    // opacity no greater than `u`, a number in [0, 1) that the ray and the triangle give (0:
+    // where the surface is wholly transparent).
+    bool cutOut(glm::vec2 uv, float u = 0.0f) const {
+        if (!textures.coverage) return false;
+        const float coverage = textures.coverage->lookup(uv)[textures.coverageChannel];
+        return textures.blended ? coverage * textures.opacity <= u : coverage < textures.alphaCutoff;
     }
     // Ke at `uv`: the emission texture times Ke, zero where the surface is cut out.
     glm::vec3 emissionAt(glm::vec2 uv) const;

@@ -11,6 +11,7 @@
 
 #include "materials/metallic_roughness.h"
 #include "materials/specular_glossiness.h"
+#include "util/components.h"
 #include "util/printable.h"
 
 namespace strata {
@@ -220,20 +221,31 @@ glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf
     return translate * rotate * stretch;
 }
 
-// alphaMode MASK (and BLEND, taken as MASK at 0.5): the coverage texture and cutoff of `maps`,
-// whose colour texture holds the alpha, `colourAlpha` the factor's.
+// alphaMode MASK and BLEND: the coverage texture and cutoff or opacity of `maps` (material.h),
+// whose colour texture holds the alpha, `colourAlpha` the factor's. BLEND on a material that
+// `emits` is taken as MASK at 0.5: a light's samples would not see its opacity.
 void applyAlphaMode(GltfModel& gltf, const tinygltf::Material& m, const std::string& name, double colourAlpha,
-                    MaterialTextures& maps) {
+                    bool emits, MaterialTextures& maps) {
+    const auto oneTexel = [] { return std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f}); };
     double cutoff = m.alphaCutoff;
+    if (m.alphaMode == "BLEND" && !emits) {
+        // Wholly opaque (a factor of 1 and no texel under it): no coverage to test.
+        if (colourAlpha >= 1.0 && (!maps.colour || maps.colour->mean().a >= 1.0f)) return;
+        maps.coverage = maps.colour ? maps.colour : oneTexel();
+        maps.coverageChannel = 3;
+        maps.blended = true;
+        maps.opacity = static_cast<float>(std::max(colourAlpha, 0.0));
+        return;
+    }
     if (m.alphaMode == "BLEND") {
-        gltf.warnOnce(name + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5");
+        gltf.warnOnce(name + ": alphaMode BLEND on an emitting material is rendered as MASK with alphaCutoff 0.5");
         cutoff = 0.5;
     }
     if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
         if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
         // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
         // without a texture the factor alone decides, through a one-texel coverage map.
-        maps.coverage = maps.colour ? maps.colour : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
+        maps.coverage = maps.colour ? maps.colour : oneTexel();
         maps.coverageChannel = 3;
         maps.alphaCutoff = colourAlpha > 0.0 ? static_cast<float>(cutoff / colourAlpha)
                                              : std::numeric_limits<float>::infinity();
@@ -317,7 +329,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         unlit.textures.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
                                           pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
                                           TextureEncoding::Colour);
-        applyAlphaMode(gltf, m, name, pbr.baseColorFactor[3], unlit.textures);
+        applyAlphaMode(gltf, m, name, pbr.baseColorFactor[3], false, unlit.textures);
         return unlit;
     }
     const auto metallic = static_cast<float>(pbr.metallicFactor);
@@ -451,7 +463,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         material.metallicRoughness = model;
     }
 
-    applyAlphaMode(gltf, m, name, colourAlpha, maps);
+    applyAlphaMode(gltf, m, name, colourAlpha, !isZero(material.emission), maps);
     return material;
 }
 

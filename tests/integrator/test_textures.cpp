@@ -33,15 +33,16 @@ void mapSquareUvs(MeshData& mesh) {
     mesh.triangleUvs = {kNoUvs, kNoUvs, {0, 1, 2}, {0, 2, 3}};
 }
 
-// A blocker z = 1/2 over [-1, 1]^2 between receiver and square, facing down, of `coverage`:
-// its UVs u = (x + 1) / 2, v = (y + 1) / 2.
-void addBlocker(MeshData& mesh, std::shared_ptr<const Texture> coverage) {
+// A blocker at height `z` over [-1, 1]^2 between receiver and square (z = 1), facing down, of
+// `coverage`: its UVs u = (x + 1) / 2, v = (y + 1) / 2. Blended, the coverage is an opacity.
+void addBlocker(MeshData& mesh, std::shared_ptr<const Texture> coverage, bool blended = false, float z = 0.5f) {
     Material blocker;
     blocker.diffuse = glm::vec3(0.5f);
     blocker.textures.coverage = std::move(coverage);
+    blocker.textures.blended = blended;
     mesh.materials.push_back(blocker);
     const auto material = static_cast<uint32_t>(mesh.materials.size() - 1);
-    test::addQuad(mesh, {-1, -1, 0.5f}, {-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, material);
+    test::addQuad(mesh, {-1, -1, z}, {-1, 1, z}, {1, 1, z}, {1, -1, z}, material);
     const auto base = static_cast<uint32_t>(mesh.uvs.size());
     mesh.uvs.insert(mesh.uvs.end(), {{0, 0}, {0, 1}, {1, 1}, {1, 0}});
     mesh.triangleUvs.push_back({base, base + 1, base + 2});
@@ -112,6 +113,55 @@ TEST_CASE("a camera ray through a cut-out texel sees what is behind it") {
     // Shadow rays likewise.
     CHECK_FALSE(scene.occluded(Ray{{-0.5f, 0.0f, 0.1f}, {0.0f, 0.0f, 1.0f}}, 0.8f));
     CHECK(scene.occluded(Ray{{0.5f, 0.0f, 0.1f}, {0.0f, 0.0f, 1.0f}}, 0.8f));
+}
+
+TEST_CASE("a blended blocker lets 1 - opacity of the light through, to light samples and bounces alike") {
+    // At depth 1 the receiver's radiance is what reaches it straight from the square: the share
+    // of shadow rays and bounce rays that pass the blockers, 1 - opacity for each layer, the
+    // layers independent.
+    const double unblocked = kRho * test::kLambertSquareIrradiance / kPi;
+    const auto opacity = [](float value) { return std::make_shared<Texture>(1, 1, 1, std::vector<float>{value}); };
+    for (const bool nee : {true, false}) {
+        MeshData one = test::lambertSquareMesh(receiver());
+        mapSquareUvs(one);
+        addBlocker(one, opacity(0.4f), true);
+        const Scene oneLayer(std::move(one));
+        checkRadiance(receiverRadiance(oneLayer, nee), 0.6 * unblocked);
+
+        MeshData two = test::lambertSquareMesh(receiver());
+        mapSquareUvs(two);
+        // Both above the camera (rayToOrigin's from z = 0.4).
+        addBlocker(two, opacity(0.5f), true, 0.5f);
+        addBlocker(two, opacity(0.5f), true, 0.7f);
+        const Scene twoLayers(std::move(two));
+        checkRadiance(receiverRadiance(twoLayers, nee), 0.25 * unblocked);
+    }
+}
+
+TEST_CASE("a camera ray meets a blended layer with its opacity's probability, the same in a packet or alone") {
+    MeshData mesh = test::lambertSquareMesh(receiver());
+    mapSquareUvs(mesh);
+    addBlocker(mesh, std::make_shared<Texture>(1, 1, 1, std::vector<float>{0.8f}), true);
+    mesh.materials.back().textures.opacity = 0.5f;  // times the texel: 0.4
+    const Scene scene(std::move(mesh));
+    std::vector<Ray> rays;
+    for (uint64_t i = 0; i < 4000; ++i) {
+        const glm::vec2 p = test::hashedPoint(i);
+        rays.push_back({{p.x - 0.5f, p.y - 0.5f, 0.8f}, {0.0f, 0.0f, -1.0f}});
+    }
+    std::vector<std::optional<RayHit>> hits(rays.size());
+    scene.intersect(rays, hits, Scene::Coherence::Incoherent);
+    std::vector<double> met;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        REQUIRE(hits[i]);
+        const auto alone = scene.intersect(rays[i]);
+        REQUIRE(alone);
+        CHECK(alone->triangle == hits[i]->triangle);
+        met.push_back(scene.triangle(hits[i]->triangle).material == 2 ? 1.0 : 0.0);
+    }
+    const test::MeanEstimate share = test::estimateMean(met);
+    INFO("share met " << share.mean << " +- " << share.standardError);
+    CHECK(std::abs(share.mean - 0.4) < 5.0 * share.standardError);
 }
 
 TEST_CASE("a flat normal map (0.5, 0.5, 1) renders the same as none") {

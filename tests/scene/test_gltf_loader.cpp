@@ -352,7 +352,8 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     LoadReport report;
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     CHECK(report.warnings == std::vector<std::string>{
-                                 "mem/model.gltf: material '' (1): alphaMode BLEND is rendered as MASK with alphaCutoff 0.5",
+                                 "mem/model.gltf: material '' (1): alphaMode BLEND on an emitting material is rendered "
+                                 "as MASK with alphaCutoff 0.5",
                                  "mem/model.gltf: material '' (1) emissiveTexture: image 2: cannot decode the texture "
                                  "(unknown image type); using the factor alone"});
     REQUIRE(mesh.uvs.size() == 3);
@@ -380,6 +381,40 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     CHECK(!mesh.materials[1].textures.emission);
     // BLEND as MASK at 0.5 with a base colour alpha factor of 1 and no texture: nothing cut out.
     CHECK_FALSE(mesh.materials[1].cutOut({0.5f, 0.5f}));
+}
+
+TEST_CASE("gltf: alphaMode BLEND is an opacity, the base colour's alpha factor times its texture's") {
+    Model model;
+    const int positions = model.positions(kTriangle);
+    const int uvs = model.accessor(std::vector<float>{0.25f, 0.5f, 0.25f, 0.5f, 0.25f, 0.5f}, "VEC2", 5126, 3);
+    model.doc["images"] = json::array({{{"uri", "data:image/png;base64," + base64(rgbaPng(1, 1, {255, 255, 255, 128}))}}});
+    model.doc["textures"] = json::array({{{"source", 0}}});
+    model.doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 0.4}}}}, {"alphaMode", "BLEND"}},
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 0.5}}, {"baseColorTexture", {{"index", 0}}}}},
+         {"alphaMode", "BLEND"}},
+        {{"alphaMode", "BLEND"}},
+    });
+    for (int m = 0; m < 3; ++m) {
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
+    }
+    LoadReport report;
+    const MeshData mesh = parse(model.gltf(), &report).mesh;
+    CHECK(report.warnings.empty());
+    const Material& factor = mesh.materials[0];
+    REQUIRE(factor.textures.coverage);
+    CHECK(factor.textures.blended);
+    CHECK(factor.textures.opacity == 0.4f);
+    // Cut out where the number the ray gives is at least the opacity.
+    CHECK_FALSE(factor.cutOut({0.5f, 0.5f}, 0.39f));
+    CHECK(factor.cutOut({0.5f, 0.5f}, 0.4f));
+    // 0.5 x 128/255.
+    const Material& textured = mesh.materials[1];
+    CHECK(textured.textures.blended);
+    CHECK_FALSE(textured.cutOut({0.25f, 0.5f}, 0.25f));
+    CHECK(textured.cutOut({0.25f, 0.5f}, 0.26f));
+    // Opaque throughout: nothing to test, no cut-out geometry.
+    CHECK_FALSE(mesh.materials[2].textures.coverage);
 }
 
 TEST_CASE("gltf: KHR_materials_pbrSpecularGlossiness onto Kd, Ks and Pr, in place of its fallback") {
