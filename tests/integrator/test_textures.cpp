@@ -1,6 +1,7 @@
 // Textures in the path tracer: a textured emitter lights as its texture says, by light samples and
 // by bounces alike (unbiased, lights/area_light.h); cut-outs let camera, bounce and shadow rays
-// through (scene/cutout_filter.h); a flat normal map changes nothing (materials/normal_map.h).
+// through (scene/cutout_filter.h), blended layers in the share their opacity leaves; a flat normal
+// map changes nothing (materials/normal_map.h).
 // Vertex colours multiply the albedo as a colour texture does.
 // On Lambert's polygon case (test_support.h): receiver radiance rho E / pi at depth 1.
 #include <doctest/doctest.h>
