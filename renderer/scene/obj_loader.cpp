@@ -400,7 +400,7 @@ bool isWrittenByBlender(const std::string& file, const std::string& name) {
 
 // Checks an MTL file line by line and appends its materials to `materials` and its text, as
 // tinyobjloader is to read it, to `tinyobjText`. Only the statements whose values the renderer
-// uses are checked; the others (Ka, d, Tr, ...) pass as they are. The texture
+// uses are checked; the others (Ka outside Blender's files, ...) pass as they are. The texture
 // statements Strata reads (mtl_texture_statement.h) are kept with their material instead, and
 // one that names no file is a warning.
 void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMaterial>& materials,
@@ -437,6 +437,18 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
         }
         if (key == "Tf" && words.size() > 1 && (words[1] == "xyz" || words[1] == "spectral")) {
             materials.back().unreadFilterLine = line;
+            return;
+        }
+        // The dissolve (applyDissolve); "d -halo" (a dissolve that depends on the angle) is read
+        // as a plain d.
+        if ((key == "d" || key == "Tr") && materials.size() > first) {
+            std::vector<std::string_view> value = words;
+            if (key == "d" && value.size() > 1 && value[1] == "-halo") {
+                warnings.push_back(name + ":" + std::to_string(line) + ": d -halo is read as a plain d");
+                value.erase(value.begin() + 1);
+            }
+            checkNumbers(name, line, value, 1, 1);
+            appendLine(tinyobjText, value);
             return;
         }
         if (colour) checkNumbers(name, line, words, 1, 3);
@@ -614,6 +626,26 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     return material;
 }
 
+// d, the dissolve (1 - Tr where there is no d), below 1: the material's opacity (material.h), as
+// Blender's importer reads it into its Principled BSDF's alpha. Not on a dielectric, whose
+// transparency is its illum, nor where map_d cuts out, nor on an emitter (a light's samples would
+// not see it: a warning).
+void applyDissolve(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
+                   std::vector<std::string>& warnings) {
+    if (!(m.dissolve < 1.0f)) return;
+    const std::string at = source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
+    if (!(m.dissolve >= 0.0f)) throw Error(at + " has a d (or Tr) outside 0..1");
+    if (material.transmission > 0.0f || material.textures.coverage) return;
+    if (!isZero(material.emission)) {
+        warnings.push_back(at + ": d (or Tr) below 1 is not applied to an emitting material");
+        return;
+    }
+    if (m.dissolve == 0.0f) warnings.push_back(at + ": d 0 (or Tr 1) makes it wholly transparent");
+    material.textures.coverage = std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
+    material.textures.blended = true;
+    material.textures.opacity = m.dissolve;
+}
+
 // The channel a texture statement's -imfchan r, g or b names, else `otherwise`.
 int channelOf(const MtlTextureStatement& statement, int otherwise) {
     if (statement.channel == 'r') return 0;
@@ -735,6 +767,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         }
         Material& material = mesh.materials.back();
         placements.push_back(addTextures(material, materials[i], mtlNames[i], textures, warnings));
+        applyDissolve(material, reader.GetMaterials()[i], materials[i], warnings);
         // Only a texture reads the metallic-roughness model at each hit (material.h).
         if (!material.hasReflectanceTextures()) material.metallicRoughness.reset();
     }

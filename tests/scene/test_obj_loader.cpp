@@ -587,6 +587,46 @@ TEST_CASE("obj: Pm, Pc and Pcr outside 0..1 name the material") {
     CHECK(error("Pm 0.5 1\n").find("scene.mtl:3:") == 0);
 }
 
+TEST_CASE("obj: d (or Tr) below 1 is an opacity of the opaque models, as Blender reads it") {
+    const char* mtl =
+        "newmtl pane\nKd 0.6 0.7 0.8\nd 0.4\n"
+        "newmtl tinted\nKd 0.5 0.5 0.5\nTr 0.25\n"
+        "newmtl halo\nKd 0.5 0.5 0.5\nd -halo 0.6\n"
+        "newmtl glass\nillum 7\nNi 1.5\nd 0.3\n"
+        "newmtl lamp\nKe 2 2 2\nd 0.5\n"
+        "newmtl ghost\nKd 0.5 0.5 0.5\nd 0\n"
+        "newmtl solid\nKd 0.5 0.5 0.5\nd 1\nTr 0\n";
+    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : {"pane", "tinted", "halo", "glass", "lamp", "ghost", "solid"}) {
+        obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    }
+    LoadReport report;
+    const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
+    REQUIRE(mesh.materials.size() >= 7);
+    const auto opacityOf = [&](size_t m) {
+        const MaterialTextures& t = mesh.materials[m].textures;
+        return t.coverage && t.blended ? t.opacity : 1.0f;
+    };
+    CHECK(opacityOf(0) == 0.4f);
+    CHECK(opacityOf(1) == 0.75f);
+    CHECK(opacityOf(2) == 0.6f);
+    // A dielectric's transparency is its illum; an emitter's d is a warning.
+    CHECK_FALSE(mesh.materials[3].textures.coverage);
+    CHECK_FALSE(mesh.materials[4].textures.coverage);
+    CHECK(opacityOf(5) == 0.0f);
+    CHECK_FALSE(mesh.materials[6].textures.coverage);
+    CHECK(report.warnings == std::vector<std::string>{
+                                 "scene.mtl:9: d -halo is read as a plain d",
+                                 "scene.mtl:14: material 'lamp': d (or Tr) below 1 is not applied to an emitting material",
+                                 "scene.mtl:17: material 'ghost': d 0 (or Tr 1) makes it wholly transparent"});
+    const auto error = [](const std::string& material) {
+        return objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n", "newmtl m\nKd 0.5 0.5 0.5\n" + material);
+    };
+    CHECK(error("d -0.5\n") == "scene.mtl:1: material 'm' has a d (or Tr) outside 0..1");
+    CHECK(error("d half\n") == "scene.mtl:3: 'half' is not a number");
+    CHECK(error("Tr 0.5 0.5\n").find("scene.mtl:3:") == 0);
+}
+
 TEST_CASE("obj: an MTL that Blender wrote is read as Blender's importer reads it") {
     // Blender 3.4.1's export of four Principled BSDFs (base colour 0.8 each): the defaults,
     // Metallic 0.5 with Roughness 0.4, Metallic 1 with Roughness 0, and Specular 0. Blender's
