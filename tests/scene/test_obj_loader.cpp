@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <numbers>
 #include <fstream>
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,6 +22,13 @@ using namespace strata;
 
 namespace {
 const char* kMtl = "newmtl white\nKd 0.5 0.6 0.7\nnewmtl lamp\nKd 0 0 0\nKe 3 2 1\n";
+
+// An OBJ of scene.mtl's materials `names`, a triangle each, in that order.
+std::string trianglePerMaterial(std::initializer_list<const char*> names) {
+    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : names) obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    return obj;
+}
 
 std::string objError(const std::string& obj, const std::string& mtl = kMtl) {
     try {
@@ -467,10 +475,7 @@ TEST_CASE("obj: illum 4, 6 and 7 are dielectrics, and illum 3 and 5 with Pr 0 or
         "newmtl chrome\nKs 0.5 0.5 0.5\nillum 5\nNs 12000\n"
         "newmtl satin\nKs 0.5 0.5 0.5\nillum 3\nNs 200\n"
         "newmtl plastic\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nillum 2\nPr 0\n";
-    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    for (const char* name : {"glass", "frosted", "window", "mirror", "chrome", "satin", "plastic"}) {
-        obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
-    }
+    const std::string obj = trianglePerMaterial({"glass", "frosted", "window", "mirror", "chrome", "satin", "plastic"});
     const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl");
     REQUIRE(mesh.materials.size() >= 7);
     const auto byName = [&](const std::string& name) -> const Material& {
@@ -543,8 +548,7 @@ TEST_CASE("obj: Pm makes Kd a base colour of glTF's metallic-roughness model, Pc
         "newmtl half\nKd 0.6 0.6 0.2\nPm 0.5\n"
         "newmtl coated\nKd 0.6 0.05 0.05\nKs 0.25 0.25 0.25\nPr 0.6\nPm 0\nPc 1\nPcr 0.1\n"
         "newmtl velvet\nKd 0.3 0.05 0.3\nPm 0\nPs 1\n";
-    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    for (const char* name : {"gold", "plastic", "half", "coated", "velvet"}) obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    const std::string obj = trianglePerMaterial({"gold", "plastic", "half", "coated", "velvet"});
     LoadReport report;
     const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
     REQUIRE(mesh.materials.size() >= 5);
@@ -596,10 +600,7 @@ TEST_CASE("obj: d (or Tr) below 1 is an opacity of the opaque models, as Blender
         "newmtl lamp\nKe 2 2 2\nd 0.5\n"
         "newmtl ghost\nKd 0.5 0.5 0.5\nd 0\n"
         "newmtl solid\nKd 0.5 0.5 0.5\nd 1\nTr 0\n";
-    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    for (const char* name : {"pane", "tinted", "halo", "glass", "lamp", "ghost", "solid"}) {
-        obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
-    }
+    const std::string obj = trianglePerMaterial({"pane", "tinted", "halo", "glass", "lamp", "ghost", "solid"});
     LoadReport report;
     const MeshData mesh = parseObj(obj, "scene.obj", mtl, "scene.mtl", &report);
     REQUIRE(mesh.materials.size() >= 7);
@@ -641,8 +642,7 @@ TEST_CASE("obj: an MTL that Blender wrote is read as Blender's importer reads it
         "Ks 0.500000 0.500000 0.500000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 3\n"
         "newmtl Spec0\nNs 250.000000\nKa 1.000000 1.000000 1.000000\nKd 0.800000 0.800000 0.800000\n"
         "Ks 0.000000 0.000000 0.000000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 1\n";
-    std::string obj = "mtllib scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    for (const char* name : {"Default", "HalfMetal", "Mirror", "Spec0"}) obj += std::string("usemtl ") + name + "\nf 1 2 3\n";
+    const std::string obj = trianglePerMaterial({"Default", "HalfMetal", "Mirror", "Spec0"});
     const auto near = [](const glm::vec3& a, float b) {
         return glm::all(glm::lessThanEqual(glm::abs(a - glm::vec3(b)), glm::vec3(1e-6f)));
     };
