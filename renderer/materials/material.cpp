@@ -1,8 +1,18 @@
 #include "materials/material.h"
 
+#include <utility>
+#include <vector>
+
 #include "util/components.h"
 
 namespace strata {
+
+void MaterialTextures::blendBy(float opacityFactor, std::shared_ptr<const Texture> texture, int channel) {
+    coverageChannel = texture ? channel : 0;
+    coverage = texture ? std::move(texture) : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
+    blended = true;
+    opacity = opacityFactor;
+}
 
 glm::vec3 Material::emissionAt(glm::vec2 uv) const {
     if (cutOut(uv)) return glm::vec3(0.0f);

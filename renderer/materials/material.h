@@ -62,6 +62,9 @@ struct MaterialTextures {
     float alphaCutoff = 0.5f;
     bool blended = false;
     float opacity = 1.0f;
+    // Makes the coverage an opacity: `opacity` times channel `channel` of `texture`, or `opacity`
+    // alone where `texture` is null (glTF's BLEND, MTL's d).
+    void blendBy(float opacity, std::shared_ptr<const Texture> texture = nullptr, int channel = 0);
     // A tangent-space normal map, RGB = (x, y, z) * 0.5 + 0.5, x along increasing u, y along
     // increasing v; x and y are scaled by `normalScale` (glTF normalTexture.scale).
     std::shared_ptr<const Texture> normal;

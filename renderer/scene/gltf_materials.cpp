@@ -226,15 +226,11 @@ glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf
 // `emits` is taken as MASK at 0.5: a light's samples would not see its opacity.
 void applyAlphaMode(GltfModel& gltf, const tinygltf::Material& m, const std::string& name, double colourAlpha,
                     bool emits, MaterialTextures& maps) {
-    const auto oneTexel = [] { return std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f}); };
     double cutoff = m.alphaCutoff;
     if (m.alphaMode == "BLEND" && !emits) {
         // Wholly opaque (a factor of 1 and no texel under it): no coverage to test.
         if (colourAlpha >= 1.0 && (!maps.colour || maps.colour->mean().a >= 1.0f)) return;
-        maps.coverage = maps.colour ? maps.colour : oneTexel();
-        maps.coverageChannel = 3;
-        maps.blended = true;
-        maps.opacity = static_cast<float>(std::max(colourAlpha, 0.0));
+        maps.blendBy(static_cast<float>(std::max(colourAlpha, 0.0)), maps.colour, 3);
         return;
     }
     if (m.alphaMode == "BLEND") {
@@ -245,7 +241,7 @@ void applyAlphaMode(GltfModel& gltf, const tinygltf::Material& m, const std::str
         if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
         // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
         // without a texture the factor alone decides, through a one-texel coverage map.
-        maps.coverage = maps.colour ? maps.colour : oneTexel();
+        maps.coverage = maps.colour ? maps.colour : std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
         maps.coverageChannel = 3;
         maps.alphaCutoff = colourAlpha > 0.0 ? static_cast<float>(cutoff / colourAlpha)
                                              : std::numeric_limits<float>::infinity();

@@ -641,9 +641,7 @@ void applyDissolve(Material& material, const tinyobj::material_t& m, const MtlMa
         return;
     }
     if (m.dissolve == 0.0f) warnings.push_back(at + ": d 0 (or Tr 1) makes it wholly transparent");
-    material.textures.coverage = std::make_shared<const Texture>(1, 1, 1, std::vector<float>{1.0f});
-    material.textures.blended = true;
-    material.textures.opacity = m.dissolve;
+    material.textures.blendBy(m.dissolve);
 }
 
 // The channel a texture statement's -imfchan r, g or b names, else `otherwise`.
