@@ -53,17 +53,18 @@ struct MaterialTextures {
     // RGB times Ke (MTL map_Ke, glTF emissiveTexture).
     std::shared_ptr<const Texture> emission;
     // Coverage: a hit where channel `coverageChannel` is below `alphaCutoff` is no hit at all
-    // (MTL map_d, glTF alphaMode MASK); the ray goes on through it (scene.h). A blended coverage
-    // (glTF alphaMode BLEND) is an opacity instead, times `opacity`: a ray goes on through with
-    // probability 1 - opacity (scene/cutout_filter.h), which renders, in expectation, the surface
-    // blended over what lies behind it, as Cycles renders a Principled BSDF's alpha.
+    // (glTF alphaMode MASK, an emitter's MTL map_d); the ray goes on through it (scene.h). A
+    // blended coverage (glTF alphaMode BLEND, MTL map_d and d) is an opacity instead, times
+    // `opacity`: a ray goes on through with probability 1 - opacity (scene/cutout_filter.h), which
+    // renders, in expectation, the surface blended over what lies behind it, as Cycles renders a
+    // Principled BSDF's alpha.
     std::shared_ptr<const Texture> coverage;
     int coverageChannel = 0;
     float alphaCutoff = 0.5f;
     bool blended = false;
     float opacity = 1.0f;
     // Makes the coverage an opacity: `opacity` times channel `channel` of `texture`, or `opacity`
-    // alone where `texture` is null (glTF's BLEND, MTL's d).
+    // alone where `texture` is null (glTF's BLEND, MTL's map_d and d).
     void blendBy(float opacity, std::shared_ptr<const Texture> texture = nullptr, int channel = 0);
     // A tangent-space normal map, RGB = (x, y, z) * 0.5 + 0.5, x along increasing u, y along
     // increasing v; x and y are scaled by `normalScale` (glTF normalTexture.scale).

@@ -439,7 +439,7 @@ void scanMtl(const std::string& text, const std::string& name, std::vector<MtlMa
             materials.back().unreadFilterLine = line;
             return;
         }
-        // The dissolve (applyDissolve); "d -halo" (a dissolve that depends on the angle) is read
+        // The dissolve (applyOpacity); "d -halo" (a dissolve that depends on the angle) is read
         // as a plain d.
         if ((key == "d" || key == "Tr") && materials.size() > first) {
             std::vector<std::string_view> value = words;
@@ -626,22 +626,26 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
     return material;
 }
 
-// d, the dissolve (1 - Tr where there is no d), below 1: the material's opacity (material.h), as
-// Blender's importer reads it into its Principled BSDF's alpha. Not on a dielectric, whose
-// transparency is its illum, nor where map_d cuts out, nor on an emitter (a light's samples would
-// not see it: a warning).
-void applyDissolve(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
-                   std::vector<std::string>& warnings) {
-    if (!(m.dissolve < 1.0f)) return;
+// d, the dissolve (1 - Tr where there is no d), times map_d where there is one: the material's
+// opacity (material.h). The MTL specification multiplies the two; Blender's importer connects
+// map_d's alpha to its Principled BSDF's alpha in place of d, which agree where d is 1, as it
+// nearly always is beside a map_d. d is not applied to a dielectric, whose transparency is its
+// illum. An emitter keeps map_d as a cut-out below 0.5 and ignores d, with a warning: a light's
+// samples would not see a blend.
+void applyOpacity(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
+                  std::vector<std::string>& warnings) {
     const std::string at = source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
     if (!(m.dissolve >= 0.0f)) throw Error(at + " has a d (or Tr) outside 0..1");
-    if (material.transmission > 0.0f || material.textures.coverage) return;
+    const float dissolve = material.transmission > 0.0f ? 1.0f : std::min(m.dissolve, 1.0f);
+    const bool mapped = material.textures.coverage != nullptr;
+    if (!(dissolve < 1.0f) && !mapped) return;
     if (!isZero(material.emission)) {
-        warnings.push_back(at + ": d (or Tr) below 1 is not applied to an emitting material");
+        if (mapped) warnings.push_back(at + ": map_d on an emitting material cuts out below 0.5");
+        if (dissolve < 1.0f) warnings.push_back(at + ": d (or Tr) below 1 is not applied to an emitting material");
         return;
     }
-    if (m.dissolve == 0.0f) warnings.push_back(at + ": d 0 (or Tr 1) makes it wholly transparent");
-    material.textures.blendBy(m.dissolve);
+    if (dissolve == 0.0f) warnings.push_back(at + ": d 0 (or Tr 1) makes it wholly transparent");
+    material.textures.blendBy(dissolve, material.textures.coverage, material.textures.coverageChannel);
 }
 
 // The channel a texture statement's -imfchan r, g or b names, else `otherwise`.
@@ -659,8 +663,8 @@ int channelOf(const MtlTextureStatement& statement, int otherwise) {
 //   map_Ke  RGB times Ke; a material with map_Ke and no Ke line takes Ke = 1;
 //   map_Pr, map_Pm  roughness and metallic (materialOf): the channel -imfchan names, else the
 //           first;
-//   map_d   coverage, cut out below 0.5: the channel -imfchan names, else the image's alpha, else
-//           its first channel;
+//   map_d   coverage, an opacity times d (applyOpacity): the channel -imfchan names, else the
+//           image's alpha, else its first channel;
 //   norm    a tangent-space normal map, -bm scaling its x and y;
 //   map_Bump, bump  the same when the image's values are a normal map's (looksLikeNormalMap);
 //           a height map is not rendered (a warning).
@@ -699,7 +703,6 @@ UvPlacement addTextures(Material& material, const MtlMaterial& source, const std
             const int channels = texture->channels();
             material.textures.coverage = texture;
             material.textures.coverageChannel = channelOf(statement, channels == 2 || channels == 4 ? 3 : 0);
-            material.textures.alphaCutoff = 0.5f;
         } else if (key == "norm" || looksLikeNormalMap(*texture)) {
             material.textures.normal = texture;
             material.textures.normalScale = statement.bumpMultiplier;
@@ -765,7 +768,7 @@ MeshData buildMesh(const SceneBundle& bundle, const std::string& objText, const 
         }
         Material& material = mesh.materials.back();
         placements.push_back(addTextures(material, materials[i], mtlNames[i], textures, warnings));
-        applyDissolve(material, reader.GetMaterials()[i], materials[i], warnings);
+        applyOpacity(material, reader.GetMaterials()[i], materials[i], warnings);
         // Only a texture reads the metallic-roughness model at each hit (material.h).
         if (!material.hasReflectanceTextures()) material.metallicRoughness.reset();
     }

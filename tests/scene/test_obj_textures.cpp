@@ -109,6 +109,45 @@ TEST_CASE("MTL textures that cannot be used are warnings, and the material keeps
     CHECK(m.emission == glm::vec3(0.0f));
 }
 
+TEST_CASE("an MTL's map_d is an opacity times d, and a cut-out below 0.5 on an emitter") {
+    const test::ScratchDir dir = test::scratchDir("obj_map_d");
+    std::string obj = "mtllib mtl/quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n";
+    for (const char* name : {"leaf", "veil", "glass", "lamp"}) {
+        obj += std::string("usemtl ") + name + "\nf 1/1 2/2 3/3\n";
+    }
+    test::writeFile(dir / "quad.obj", obj);
+    test::writeFile(dir / "mtl" / "quad.mtl",
+                    "newmtl leaf\nKd 0.5 0.5 0.5\nmap_d leaf.png\n"
+                    "newmtl veil\nKd 0.5 0.5 0.5\nd 0.5\nmap_d grey.png\n"
+                    "newmtl glass\nillum 7\nNi 1.5\nd 0.3\nmap_d grey.png\n"
+                    "newmtl lamp\nKe 1 1 1\nd 0.5\nmap_d -imfchan r leaf.png\n");
+    // The leaf's alpha is 102 (0.4): its opacity is the image's alpha, not its grey.
+    writePng(dir / "mtl" / "leaf.png", 1, 1, 4, {255, 255, 255, 102});
+    writePng(dir / "mtl" / "grey.png", 1, 1, 1, {153});
+    const LoadedScene loaded = loadScene(dir / "quad.obj");
+    const auto& materials = loaded.scene.mesh().materials;
+    REQUIRE(materials.size() >= 4);
+    // A ray goes on through with probability 1 - opacity: for the passing numbers u >= opacity.
+    const auto opacity = [&](size_t m) {
+        const Material& material = materials[m];
+        CHECK(material.textures.blended);
+        CHECK_FALSE(material.cutOut({0.5f, 0.5f}, 0.0f));
+        return material.textures.coverage->lookup({0.5f, 0.5f})[material.textures.coverageChannel] *
+               material.textures.opacity;
+    };
+    CHECK(opacity(0) == doctest::Approx(0.4));
+    CHECK(materials[0].cutOut({0.5f, 0.5f}, 0.41f));
+    CHECK_FALSE(materials[0].cutOut({0.5f, 0.5f}, 0.39f));
+    CHECK(opacity(1) == doctest::Approx(0.3));  // d 0.5 times the grey 0.6
+    CHECK(opacity(2) == doctest::Approx(0.6));  // a dielectric's d is its illum's, not applied
+    // The lamp's red channel is 1: a cut-out that lets nothing through, d not applied.
+    CHECK_FALSE(materials[3].textures.blended);
+    CHECK_FALSE(materials[3].cutOut({0.5f, 0.5f}, 0.99f));
+    CHECK(loaded.report.warnings.size() == 2);
+    CHECK(hasWarning(loaded, "quad.mtl:13: material 'lamp': map_d on an emitting material cuts out below 0.5"));
+    CHECK(hasWarning(loaded, "quad.mtl:13: material 'lamp': d (or Tr) below 1 is not applied to an emitting material"));
+}
+
 TEST_CASE("an MTL's map_Pm and map_Pr vary metallic and roughness, each from the channel -imfchan names") {
     const test::ScratchDir dir = test::scratchDir("obj_metallic_roughness");
     test::writeFile(dir / "quad.obj", kQuadObj);
