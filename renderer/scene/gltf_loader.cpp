@@ -16,11 +16,14 @@
 #include <utility>
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_binary.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_nodes.h"
+#include "scene/gltf_version1.h"
 #include "scene/scene_textures.h"
 #include "util/error.h"
+#include "util/little_endian.h"
 #include "util/printable.h"
 #include "util/text_file.h"
 
@@ -136,13 +139,6 @@ std::string firstLine(const std::string& text) {
     return text.substr(start, text.find_first_of("\n\r", start) - start);
 }
 
-uint32_t littleEndian32(std::string_view bytes, size_t offset) {
-    const auto byte = [&](size_t k) {
-        return static_cast<uint32_t>(static_cast<unsigned char>(bytes[offset + k]));
-    };
-    return byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
-}
-
 // A binary glTF's layout against its size (glTF 2.0, "Binary glTF Layout"): the 12-byte header
 // (magic, version 2, the total length), then chunks of an 8-byte header (length, type) and their
 // data, all within the length and the length within the file. tinygltf 2.7 does not check all of
@@ -178,9 +174,8 @@ std::string_view jsonOf(const std::string& bytes, bool binary) {
     return std::string_view(bytes).substr(20, littleEndian32(bytes, 12));
 }
 
-// Refuses a glTF 1.0 file by its version (asset.version "1.0", or the number 1 that some exporters
-// wrote): its lists are objects keyed by name where 2.0 has arrays, and tinygltf, which reads 2.0,
-// would fail on the first of them without naming the version. A later minor version of 2 is read.
+// Refuses a version other than 1 (upgraded, gltf_version1.h) and 2; a later minor version of 2 is
+// read.
 void checkVersion(const nlohmann::json& document, const std::string& path) {
     const auto asset = document.find("asset");
     if (asset == document.end() || !asset->is_object()) return;
@@ -241,29 +236,30 @@ void checkArrays(const nlohmann::json& document, const std::string& path) {
 // The file's bytes with its JSON replaced by `json` (a binary file's other chunks kept).
 std::string withJson(const std::string& bytes, bool binary, const std::string& json) {
     if (!binary) return json;
-    std::string chunk = json;
-    while (chunk.size() % 4) chunk += ' ';
     const size_t rest = std::min(bytes.size(), 20 + jsonOf(bytes, binary).size());
-    std::string out = bytes.substr(0, 12);
-    const auto word = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
-    word(static_cast<uint32_t>(chunk.size()));
-    word(0x4E4F534A);  // JSON
-    out += chunk;
-    out.append(bytes, rest, std::string::npos);
-    const auto length = static_cast<uint32_t>(out.size());
-    std::memcpy(out.data() + 8, &length, sizeof length);
-    return out;
+    return glbOf(json, std::string_view(bytes).substr(rest));
 }
 
-// The model of a glTF file's bytes (JSON, or binary by its magic), its URIs read through `files`.
-tinygltf::Model loadModel(const std::string& bytes, const std::string& path,
-                          tinygltf::FsCallbacks files, std::vector<std::string>* images) {
+constexpr const char* kUpgradedNote =
+    "glTF 1.0, read as 2.0: its Blinn-Phong materials as specular-glossiness ones; shaders, skins, "
+    "animations and lights not read";
+
+// The model of a glTF file's bytes (JSON, or binary by its magic), its URIs read through `files`;
+// a glTF 1.0 file's is its upgrade's, with kUpgradedNote in `notes`.
+tinygltf::Model loadModel(const std::string& bytes, const std::string& path, tinygltf::FsCallbacks files,
+                          std::vector<std::string>* images, std::vector<std::string>& notes) {
     if (bytes.size() > std::numeric_limits<uint32_t>::max()) throw Error(path + ": larger than 4 GB");
     const bool binary = bytes.compare(0, 4, "glTF") == 0;
+    const auto upgraded = [&] {
+        notes.push_back(kUpgradedNote);
+        return loadModel(upgradeGltfVersion1(bytes, path), path, files, images, notes);
+    };
+    if (binary && isBinaryGltfVersion1(bytes)) return upgraded();
     if (binary) checkBinaryLayout(bytes, path);
     nlohmann::json document = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, /*allow_exceptions=*/false);
     std::string rewritten;  // the bytes tinygltf reads when they differ from the file's
     if (document.is_object()) {  // else tinygltf says what is wrong with it
+        if (!binary && isGltfVersion1(document)) return upgraded();
         checkVersion(document, path);
         checkRequiredExtensions(document, path);
         checkArrays(document, path);
@@ -298,9 +294,11 @@ std::vector<SceneFile> readGltfScene(const std::filesystem::path& path, SceneFol
     const std::string name = printable(path.string());
     FolderFiles uris{folder, name + ": URI", {}, std::nullopt};
     std::vector<std::string> images;
+    std::vector<std::string> notes;  // given when the bundle is parsed
     try {
         loadModel(files.front().bytes, name,
-                  tinygltf::FsCallbacks{folderFileExists, sameName, readFolderFile, nullptr, &uris}, &images);
+                  tinygltf::FsCallbacks{folderFileExists, sameName, readFolderFile, nullptr, &uris}, &images,
+                  notes);
     } catch (const Error&) {
         if (!uris.refusal) throw;
     }
@@ -317,11 +315,14 @@ ParsedScene parseGltfScene(const SceneBundle& bundle, LoadReport* report, const 
     // tinygltf takes a non-const user pointer; the bundle callbacks only read through it.
     auto* files = const_cast<SceneBundle*>(&bundle);
     std::vector<std::string> images;
-    tinygltf::Model model = loadModel(
-        main.bytes, path, tinygltf::FsCallbacks{bundleFileExists, sameName, readBundleFile, nullptr, files}, &images);
+    std::vector<std::string> notes;
+    tinygltf::Model model =
+        loadModel(main.bytes, path, tinygltf::FsCallbacks{bundleFileExists, sameName, readBundleFile, nullptr, files},
+                  &images, notes);
     decodeMeshoptBufferViews(model, path);
     decodeDracoPrimitives(model, path);
     GltfModel gltf{model, path, images, {}};
+    for (const std::string& note : notes) gltf.warnOnce(note);
     warnUnreadExtensions(gltf);
     std::vector<std::string> textureWarnings;
     SceneTextures textures(bundle, textureWarnings, TextureBudget(budget.textureBytes, budget.textureBytesSpent));

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes the loader fuzzer's seeds that hold binary files (loader_input.h): a binary glTF, EXR
-textures and an EXR environment map, and the binary glTF finding whose BIN chunk claims 8 bytes
+"""Writes the loader fuzzer's seeds that hold binary files (loader_input.h): a binary glTF, glTF
+1.0 files (text and binary), EXR textures and an EXR environment map, and the binary glTF finding whose BIN chunk claims 8 bytes
 more than the file holds. Run from the repository's root: python3 tests/fuzz/binary_seeds.py"""
+import base64
 import json
 import math
 import struct
@@ -113,6 +114,59 @@ def triangle_model():
     return document, binary
 
 
+def version1_model(binary_body):
+    """triangle_model's triangle in glTF 1.0's form: lists keyed by name, positions read with a
+    stride, a node of two meshes, a technique's Blinn-Phong values and KHR_materials_common's;
+    `binary_body` puts the buffer and the texture's image in a KHR_binary_glTF body."""
+    _, binary = triangle_model()
+    uri = "data:," if binary_body else "data:application/octet-stream;base64," + base64.b64encode(binary).decode()
+    buffer = {"byteLength": len(binary), "uri": uri}
+    image = ({"uri": "data:,", "extensions": {"KHR_binary_glTF": {"bufferView": "image", "mimeType": "image/png"}}}
+             if binary_body else {"uri": "fuzz.png"})
+    name = "binary_glTF" if binary_body else "buf"
+    return {
+        "asset": {"version": "1.0"},
+        "extensionsUsed": ["KHR_binary_glTF", "KHR_materials_common"],
+        "buffers": {name: buffer},
+        "bufferViews": {"vertices": {"buffer": name, "byteOffset": 0, "byteLength": 60, "target": 34962},
+                        "indices": {"buffer": name, "byteOffset": 60, "byteLength": 6, "target": 34963},
+                        "image": {"buffer": name, "byteOffset": 68, "byteLength": 0}},
+        "accessors": {"position": {"bufferView": "vertices", "byteOffset": 0, "byteStride": 12,
+                                   "componentType": 5126, "count": 3, "type": "VEC3"},
+                      "strided": {"bufferView": "vertices", "byteOffset": 0, "byteStride": 24,
+                                  "componentType": 5126, "count": 2, "type": "VEC2"},
+                      "uv": {"bufferView": "vertices", "byteOffset": 36, "componentType": 5126, "count": 3,
+                             "type": "VEC2"},
+                      "index": {"bufferView": "indices", "byteOffset": 0, "componentType": 5123, "count": 3,
+                                "type": "SCALAR"}},
+        "images": {"img": image},
+        "samplers": {"s": {"magFilter": 9728, "wrapS": 33071}},
+        "textures": {"tex": {"source": "img", "sampler": "s"}},
+        "techniques": {"t": {"parameters": {"diffuse": {"type": 35666, "value": [0.5, 0.5, 0.5, 1]}}}},
+        "materials": {"phong": {"technique": "t", "values": {"specular": [0.04, 0.04, 0.04, 1], "shininess": 50,
+                                                              "emission": [2, 1, 0, 1]}},
+                      "common": {"extensions": {"KHR_materials_common": {
+                          "technique": "BLINN", "values": {"diffuse": "tex", "emission": "tex"}}}}},
+        "meshes": {"a": {"primitives": [{"attributes": {"POSITION": "position", "TEXCOORD_0": "uv",
+                                                         "JOINT": "strided"},
+                                          "indices": "index", "material": "phong"}]},
+                   "b": {"primitives": [{"attributes": {"POSITION": "position", "TEXCOORD_0": "uv"},
+                                         "material": "common", "mode": 4}]}},
+        "cameras": {"c": {"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1, "aspectRatio": 1}}},
+        "nodes": {"root": {"meshes": ["a", "b"], "children": ["eye"], "translation": [0, 0, 1]},
+                  "eye": {"camera": "c", "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.3, 0.3, 3, 1]}},
+        "scenes": {"s": {"nodes": ["root"]}},
+        "scene": "s",
+    }, binary
+
+
+def binary_version1(document, body):
+    """A KHR_binary_glTF file: "glTF", version 1, the length, the content's length and format 0."""
+    text = json.dumps(document, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    return b"glTF" + struct.pack("<IIII", 1, 20 + len(text) + len(body), len(text), 0) + text + body
+
+
 QUAD_OBJ = (b"mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
             b"vn 0 0 1\nusemtl glow\nf 1/1/1 2/2/1 3/3/1 4/4/1\n")
 GLOW_MTL = b"newmtl glow\nKd 0.5 0.5 0.5\nKe 1 1 1\nmap_Ke fuzz.png\nmap_Kd fuzz.png\n"
@@ -136,6 +190,14 @@ def main():
                                                             texture=exr(2, 2, ODD_TEXELS),
                                                             environment=exr(4, 2, SKY)),
     }
+    version1, body = version1_model(binary_body=True)
+    body += b"\0" * (-len(body) % 4)
+    version1["bufferViews"]["image"].update(byteOffset=len(body), byteLength=len(texture))
+    body += texture
+    version1["buffers"]["binary_glTF"]["byteLength"] = len(body)
+    seeds["tests/fuzz/corpus/gltf-version1-binary"] = container(gltf=binary_version1(version1, body))
+    seeds["tests/fuzz/corpus/gltf-version1"] = container(
+        gltf=json.dumps(version1_model(binary_body=False)[0]).encode(), texture=texture)
     seeds["tests/fuzz/findings/crash-glb-bin-chunk-over-read"] = container(gltf=over_read_glb())
     for path, data in seeds.items():
         with open(path, "wb") as f:
