@@ -20,6 +20,10 @@ scenes=(
   "$models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf"
   /usr/share/doc/embree3/models/cornell_box.obj
   "$models/OBJ/regr01.obj"
+  "$models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf"
+  "$models/OBJ/spider.obj"
+  "$models/glTF2/textureTransform/TextureTransformTest.gltf"
+  "$models/OBJ/cube_with_vertexcolors.obj"
 )
 names=()
 for scene in "${scenes[@]}"; do
