@@ -33,7 +33,7 @@ AreaLight::AreaLight(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
     uvs_ = uvs;
 }
 
-glm::vec3 AreaLight::radianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const {
+glm::vec3 AreaLight::sampledRadianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const {
     if (!textured_) return radiance_;
     // The barycentrics of the point reached, from the sub-triangles' areas.
     const glm::dvec3 a(p0_), e1 = glm::dvec3(p1_) - a, e2 = glm::dvec3(p2_) - a;
@@ -42,7 +42,7 @@ glm::vec3 AreaLight::radianceAlong(const glm::dvec3& point, const glm::dvec3& di
     const double twiceArea = glm::dot(n, n);
     const double b1 = glm::dot(glm::cross(q, e2), n) / twiceArea;
     const double b2 = glm::dot(glm::cross(e1, q), n) / twiceArea;
-    return radianceAt(static_cast<float>(b1), static_cast<float>(b2));
+    return sampledRadianceAt(static_cast<float>(b1), static_cast<float>(b2));
 }
 
 std::optional<SphericalTriangle> AreaLight::spherical(const glm::vec3& point) const {
@@ -74,7 +74,7 @@ std::optional<LightSample> AreaLight::sample(const glm::vec3& point, glm::vec2 u
     // The point, found in double, is rounded once to float.
     const glm::vec3 onLight(glm::dvec3(point) + distance * direction);
     return sampleAt(onLight, glm::vec3(direction), static_cast<float>(distance),
-                    radianceAlong(glm::dvec3(point), direction, distance),
+                    sampledRadianceAlong(glm::dvec3(point), direction, distance),
                     static_cast<float>(1.0 / triangle->solidAngle()));
 }
 
@@ -91,7 +91,7 @@ std::optional<LightSample> AreaLight::sampleArea(const glm::vec3& point, glm::ve
     const glm::vec3 direction = toLight / distance;
     const float cosLight = -glm::dot(normal_, direction);
     if (!(cosLight > 0.0f)) return std::nullopt;  // the point sees its back (one-sided)
-    return sampleAt(onLight, direction, distance, radianceAt(b1, b2), distanceSquared / (area_ * cosLight));
+    return sampleAt(onLight, direction, distance, sampledRadianceAt(b1, b2), distanceSquared / (area_ * cosLight));
 }
 
 // The shortened segment ends off the surface by shortening x distance x cos along the normal.

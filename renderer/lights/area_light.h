@@ -5,10 +5,13 @@
 // 1 / Omega; otherwise uniformly by area, density d^2 / (A cos(theta_light)). Which of the two
 // depends only on the point and the triangle, so sample() and pdf() always agree.
 //
-// A textured emitter (a material with an emission texture or a cut-out, material.h) takes its
+// A textured emitter (a material with an emission texture or a coverage, material.h) takes its
 // radiance at each point from the material at that point's UV, both where a light sample lands
 // and where a ray hits it, so the estimator stays unbiased; its power, by which lights are
-// chosen, uses Ke's mean over the emission texture, positive wherever the radiance can be.
+// chosen, uses Ke's mean over the emission texture, positive wherever the radiance can be. A
+// blended emitter stops a ray with probability opacity (scene/cutout_filter.h), and a ray that
+// hits it sees Le: in expectation opacity x Le, which its light samples carry, the shadow ray
+// ending short of the light and so not testing it.
 #include <array>
 #include <glm/vec2.hpp>
 
@@ -58,17 +61,25 @@ private:
     // The triangle as seen from `point` when it is sampled by solid angle from there.
     std::optional<SphericalTriangle> spherical(const glm::vec3& point) const;
     std::optional<LightSample> sampleArea(const glm::vec3& point, glm::vec2 u) const;
-    // Le at barycentrics (b1, b2) of vertices 1 and 2.
+    // Le at barycentrics (b1, b2) of vertices 1 and 2, as a ray that hits there sees it, and as a
+    // light sample there brings it (times a blended emitter's opacity).
     glm::vec3 radianceAt(float b1, float b2) const {
         if (!textured_) return radiance_;
-        return textured_->emissionAt((1.0f - b1 - b2) * uvs_[0] + b1 * uvs_[1] + b2 * uvs_[2]);
+        return textured_->emissionAt(uvAt(b1, b2));
     }
+    glm::vec3 sampledRadianceAt(float b1, float b2) const {
+        if (!textured_) return radiance_;
+        const glm::vec2 uv = uvAt(b1, b2);
+        return textured_->emissionAt(uv) * textured_->opacityAt(uv);
+    }
+    glm::vec2 uvAt(float b1, float b2) const { return (1.0f - b1 - b2) * uvs_[0] + b1 * uvs_[1] + b2 * uvs_[2]; }
     // A sample of the point `onLight`, at `distance` along `direction`, with its end off the
     // surface where the shortened shadow ray would not clear the point's error (light.h).
     std::optional<LightSample> sampleAt(const glm::vec3& onLight, const glm::vec3& direction, float distance,
                                         const glm::vec3& radiance, float pdf) const;
-    // Le where the ray from `point` along `direction` meets the triangle at `distance`.
-    glm::vec3 radianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const;
+    // sampledRadianceAt where the ray from `point` along `direction` meets the triangle at
+    // `distance`.
+    glm::vec3 sampledRadianceAlong(const glm::dvec3& point, const glm::dvec3& direction, double distance) const;
 
     glm::vec3 p0_, p1_, p2_;
     glm::vec3 normal_;  // unit, the emitting side's

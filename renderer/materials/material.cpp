@@ -25,7 +25,8 @@ float Material::maxEmission() const {
 }
 
 glm::vec3 Material::meanEmission() const {
-    return textures.emission ? emission * glm::vec3(textures.emission->mean()) : emission;
+    const glm::vec3 e = textures.emission ? emission * glm::vec3(textures.emission->mean()) : emission;
+    return textures.blended ? e * (textures.coverage->mean()[textures.coverageChannel] * textures.opacity) : e;
 }
 
 }  // namespace strata

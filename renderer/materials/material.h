@@ -146,10 +146,17 @@ struct Material {
         const float coverage = textures.coverage->lookup(uv)[textures.coverageChannel];
         return textures.blended ? coverage * textures.opacity <= u : coverage < textures.alphaCutoff;
     }
+    // The share of the rays meeting the surface at `uv` that stop there: a blended coverage's
+    // opacity, else 1 (a cut-out's hits are all or nothing).
+    float opacityAt(glm::vec2 uv) const {
+        if (!textures.blended) return 1.0f;
+        return textures.coverage->lookup(uv)[textures.coverageChannel] * textures.opacity;
+    }
     // Ke at `uv`: the emission texture times Ke, zero where the surface is cut out.
     glm::vec3 emissionAt(glm::vec2 uv) const;
-    // The largest Ke component over the surface, and Ke's mean over the emission texture (for
-    // the light's power, by which lights are chosen: positive wherever Ke can be).
+    // The largest Ke component over the surface, and Ke's mean over the emission texture times
+    // a blended coverage's mean opacity (for the light's power, by which lights are chosen:
+    // positive wherever Ke can be).
     float maxEmission() const;
     glm::vec3 meanEmission() const;
 };

@@ -233,6 +233,46 @@ void checkArrays(const nlohmann::json& document, const std::string& path) {
     });
 }
 
+// Refuses an image whose buffer view runs past the end of its buffer (glTF 2.0, "Buffers and
+// Buffer Views": byteOffset + byteLength <= the buffer's byteLength): tinygltf 2.7 hands such a
+// view to the image callback unchecked, reading past the buffer's data. Other views are checked
+// where an accessor reads them (gltf_accessors.h), and malformed numbers are left to tinygltf,
+// which names them.
+void checkImageViews(const nlohmann::json& document, const std::string& path) {
+    const auto list = [&](const char* key) -> const nlohmann::json* {
+        const auto it = document.find(key);
+        return it != document.end() && it->is_array() ? &*it : nullptr;
+    };
+    const nlohmann::json* images = list("images");
+    const nlohmann::json* views = list("bufferViews");
+    const nlohmann::json* buffers = list("buffers");
+    if (!images || !views || !buffers) return;
+    const auto whole = [](const nlohmann::json& object, const char* key, uint64_t otherwise) -> std::optional<uint64_t> {
+        if (!object.is_object()) return std::nullopt;
+        const auto it = object.find(key);
+        if (it == object.end()) return otherwise;
+        if (it->is_number_unsigned()) return it->get<uint64_t>();
+        return std::nullopt;
+    };
+    for (size_t i = 0; i < images->size(); ++i) {
+        const auto v = whole((*images)[i], "bufferView", views->size());
+        if (!v || *v >= views->size()) continue;
+        const nlohmann::json& view = (*views)[*v];
+        const auto b = whole(view, "buffer", buffers->size());
+        if (!b || *b >= buffers->size()) continue;
+        const auto offset = whole(view, "byteOffset", 0);
+        const auto length = whole(view, "byteLength", 0);
+        const auto size = whole((*buffers)[*b], "byteLength", 0);
+        if (!offset || !length || !size) continue;
+        if (*offset > *size || *length > *size - *offset) {
+            throw Error(path + ": image " + std::to_string(i) + ": bufferView " + std::to_string(*v) + " (byteOffset " +
+                        std::to_string(*offset) + ", byteLength " + std::to_string(*length) +
+                        ") runs past the end of buffer " + std::to_string(*b) + " (" + std::to_string(*size) +
+                        " bytes)");
+        }
+    }
+}
+
 // The file's bytes with its JSON replaced by `json` (a binary file's other chunks kept).
 std::string withJson(const std::string& bytes, bool binary, const std::string& json) {
     if (!binary) return json;
@@ -263,6 +303,7 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path, tin
         checkVersion(document, path);
         checkRequiredExtensions(document, path);
         checkArrays(document, path);
+        checkImageViews(document, path);
         bool changed = giveMeshoptFallbacksData(document);
         changed = giveDracoIndicesAView(document) || changed;
         if (changed) rewritten = withJson(bytes, binary, document.dump());

@@ -222,22 +222,17 @@ glm::dmat3 transformOf(GltfModel& gltf, const std::string& where, const tinygltf
 }
 
 // alphaMode MASK and BLEND: the coverage texture and cutoff or opacity of `maps` (material.h),
-// whose colour texture holds the alpha, `colourAlpha` the factor's. BLEND on a material that
-// `emits` is taken as MASK at 0.5: a light's samples would not see its opacity.
+// whose colour texture holds the alpha, `colourAlpha` the factor's.
 void applyAlphaMode(GltfModel& gltf, const tinygltf::Material& m, const std::string& name, double colourAlpha,
-                    bool emits, MaterialTextures& maps) {
-    double cutoff = m.alphaCutoff;
-    if (m.alphaMode == "BLEND" && !emits) {
+                    MaterialTextures& maps) {
+    const double cutoff = m.alphaCutoff;
+    if (m.alphaMode == "BLEND") {
         // Wholly opaque (a factor of 1 and no texel under it): no coverage to test.
         if (colourAlpha >= 1.0 && (!maps.colour || maps.colour->mean().a >= 1.0f)) return;
         maps.blendBy(static_cast<float>(std::max(colourAlpha, 0.0)), maps.colour, 3);
         return;
     }
-    if (m.alphaMode == "BLEND") {
-        gltf.warnOnce(name + ": alphaMode BLEND on an emitting material is rendered as MASK with alphaCutoff 0.5");
-        cutoff = 0.5;
-    }
-    if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
+    if (m.alphaMode == "MASK") {
         if (!(cutoff >= 0.0) || !std::isfinite(cutoff)) gltf.fail(name + ": alphaCutoff is not a finite number >= 0");
         // alpha = baseColorFactor.a x texel alpha < cutoff <=> texel alpha < cutoff / factor.a;
         // without a texture the factor alone decides, through a one-texel coverage map.
@@ -325,7 +320,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         unlit.textures.colour = textureOf(gltf, textures, name + " baseColorTexture", pbr.baseColorTexture.index,
                                           pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
                                           TextureEncoding::Colour);
-        applyAlphaMode(gltf, m, name, pbr.baseColorFactor[3], false, unlit.textures);
+        applyAlphaMode(gltf, m, name, pbr.baseColorFactor[3], unlit.textures);
         return unlit;
     }
     const auto metallic = static_cast<float>(pbr.metallicFactor);
@@ -459,7 +454,7 @@ Material gltfMaterial(GltfModel& gltf, SceneTextures& textures, size_t index) {
         material.metallicRoughness = model;
     }
 
-    applyAlphaMode(gltf, m, name, colourAlpha, !isZero(material.emission), maps);
+    applyAlphaMode(gltf, m, name, colourAlpha, maps);
     return material;
 }
 

@@ -8,8 +8,8 @@
 //                   emission has no side, so a double-sided emitter lights only from its front;
 //   normalTexture   a tangent-space normal map with its `scale`; the tangents come from the
 //                   UVs (a TANGENT attribute is not read), the bitangent toward +v as the map's +y;
-//   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND is taken
-//                   as MASK at 0.5 (a warning), OPAQUE ignores alpha;
+//   alphaMode MASK  cut out where base colour alpha < alphaCutoff (default 0.5); BLEND makes the
+//                   alpha an opacity (material.h), OPAQUE ignores alpha;
 //   KHR_materials_ior, KHR_materials_specular  the dielectric reflectance at normal incidence,
 //                   ((ior - 1) / (ior + 1))^2 x specularColorFactor x specularColorTexture's RGB
 //                   (sRGB), at most 1, x specularFactor x specularTexture's A (linear), and the

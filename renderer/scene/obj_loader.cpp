@@ -630,8 +630,7 @@ Material materialOf(const tinyobj::material_t& m, const MtlMaterial& source) {
 // opacity (material.h). The MTL specification multiplies the two; Blender's importer connects
 // map_d's alpha to its Principled BSDF's alpha in place of d, which agree where d is 1, as it
 // nearly always is beside a map_d. d is not applied to a dielectric, whose transparency is its
-// illum. An emitter keeps map_d as a cut-out below 0.5 and ignores d, with a warning: a light's
-// samples would not see a blend.
+// illum.
 void applyOpacity(Material& material, const tinyobj::material_t& m, const MtlMaterial& source,
                   std::vector<std::string>& warnings) {
     const std::string at = source.file + ":" + std::to_string(source.line) + ": material " + quote(source.name);
@@ -639,11 +638,6 @@ void applyOpacity(Material& material, const tinyobj::material_t& m, const MtlMat
     const float dissolve = material.transmission > 0.0f ? 1.0f : std::min(m.dissolve, 1.0f);
     const bool mapped = material.textures.coverage != nullptr;
     if (!(dissolve < 1.0f) && !mapped) return;
-    if (!isZero(material.emission)) {
-        if (mapped) warnings.push_back(at + ": map_d on an emitting material cuts out below 0.5");
-        if (dissolve < 1.0f) warnings.push_back(at + ": d (or Tr) below 1 is not applied to an emitting material");
-        return;
-    }
     if (dissolve == 0.0f) warnings.push_back(at + ": d 0 (or Tr 1) makes it wholly transparent");
     material.textures.blendBy(dissolve, material.textures.coverage, material.textures.coverageChannel);
 }

@@ -139,6 +139,15 @@ const std::vector<BadInputCase> kCliCases = {
      {{"s.gltf", gltfTriangleOnNodes(R"([{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":)"
                                      R"({"attributes":{"TRANSLATION":0,"SCALE":1}}}}])")}},
      "render {dir}/s.gltf", "s.gltf: mesh '' (0) EXT_mesh_gpu_instancing: SCALE accessor 1 is not a VEC3"},
+    {"glTF image buffer view running past its buffer",
+     {{"s.gltf", R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"data:application/octet-stream;)"
+                 R"(base64,AAAAAA=="}],"bufferViews":[{"buffer":0,"byteLength":8}],"images":[{"bufferView":0,)"
+                 R"("mimeType":"image/png"}]})"}},
+     "render {dir}/s.gltf",
+     "s.gltf: image 0: bufferView 0 (byteOffset 0, byteLength 8) runs past the end of buffer 0 (4 bytes)"},
+    {"glTF 1.0 name that names nothing",
+     {{"s.gltf", R"({"asset":{"version":"1.0"},"meshes":{"a":{"primitives":[{"attributes":{"POSITION":"nope"}}]}}})"}},
+     "render {dir}/s.gltf", "s.gltf: glTF 1.0: mesh 'a': POSITION names accessor \"nope\", which does not exist"},
     // MTL
     {"MTL malformed Kd", {{"s.mtl", "newmtl white\nKd 0.5 abc 0.5\n"}}, "render {dir}/s.obj",
      "s.mtl:2: 'abc' is not a number"},

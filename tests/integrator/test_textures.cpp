@@ -1,7 +1,7 @@
 // Textures in the path tracer: a textured emitter lights as its texture says, by light samples and
 // by bounces alike (unbiased, lights/area_light.h); cut-outs let camera, bounce and shadow rays
-// through (scene/cutout_filter.h), blended layers in the share their opacity leaves; a flat normal
-// map changes nothing (materials/normal_map.h).
+// through (scene/cutout_filter.h), blended layers in the share their opacity leaves, and a
+// blended emitter lights by its opacity; a flat normal map changes nothing (materials/normal_map.h).
 // Vertex colours multiply the albedo as a colour texture does.
 // On Lambert's polygon case (test_support.h): receiver radiance rho E / pi at depth 1.
 #include <doctest/doctest.h>
@@ -136,6 +136,20 @@ TEST_CASE("a blended blocker lets 1 - opacity of the light through, to light sam
         addBlocker(two, opacity(0.5f), true, 0.7f);
         const Scene twoLayers(std::move(two));
         checkRadiance(receiverRadiance(twoLayers, nee), 0.25 * unblocked);
+    }
+}
+
+TEST_CASE("a blended emitter lights by its opacity, its light samples as the rays that meet it") {
+    // Opacity 0.5 x the texels 0.2 and 1 across u: as in the textured emitter's case, by the
+    // square's symmetry the mean opacity that the receiver sees is 0.5 x (0.2 + 1) / 2 = 0.3. A
+    // bounce meets the square with that probability and sees Le; a light sample carries 0.3 Le.
+    const double unblocked = kRho * test::kLambertSquareIrradiance / kPi;
+    for (const bool nee : {true, false}) {
+        MeshData mesh = test::lambertSquareMesh(receiver());
+        mapSquareUvs(mesh);
+        mesh.materials[1].textures.blendBy(0.5f, std::make_shared<Texture>(2, 1, 1, std::vector<float>{0.2f, 1.0f}));
+        const Scene scene(std::move(mesh));
+        checkRadiance(receiverRadiance(scene, nee), 0.3 * unblocked);
     }
 }
 

@@ -79,3 +79,20 @@ TEST_CASE("fuzz regressions: a binary glTF whose BIN chunk claims its header's 8
     CHECK_THROWS_WITH_AS(parseSceneFile({"mem/x.glb", {{"x.glb", glb.substr(0, 16)}}, std::nullopt, std::nullopt}),
                          "mem/x.glb: the binary glTF header gives a length of 376 bytes, the file has 16", Error);
 }
+
+TEST_CASE("fuzz regressions: an image whose buffer view runs past its buffer is refused") {
+    // Finding crash-gltf-image-view-past-buffer: a glTF 1.0 .glb (upgraded, gltf_version1.h) whose
+    // image view ends a byte past its 145-byte body. tinygltf 2.7 passed the view to the image
+    // callback unchecked (AddressSanitizer: heap-buffer-overflow in keepEncodedImage's copy); a
+    // glTF 2.0 file with such a view did the same.
+    const std::string finding =
+        test::fileBytes(test::sourceDir() / "tests/fuzz/findings/crash-gltf-image-view-past-buffer");
+    std::string_view input = finding;  // the glTF part, the 4th
+    for (int part = 0; part < 3; ++part) input.remove_prefix(input.find(fuzz::kPartSeparator) + fuzz::kPartSeparator.size());
+    const std::string glb(input.substr(0, input.find(fuzz::kPartSeparator)));
+    const SceneBundle bundle{"mem/view.glb", {{"view.glb", glb}}, std::nullopt, std::nullopt};
+    CHECK_THROWS_WITH_AS(parseSceneFile(bundle),
+                         "mem/view.glb: image 0: bufferView 0 (byteOffset 68, byteLength 78) runs past the end of "
+                         "buffer 0 (145 bytes)",
+                         Error);
+}

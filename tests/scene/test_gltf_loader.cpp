@@ -352,8 +352,6 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     LoadReport report;
     const MeshData mesh = parse(model.gltf(), &report).mesh;
     CHECK(report.warnings == std::vector<std::string>{
-                                 "mem/model.gltf: material '' (1): alphaMode BLEND on an emitting material is rendered "
-                                 "as MASK with alphaCutoff 0.5",
                                  "mem/model.gltf: material '' (1) emissiveTexture: image 2: cannot decode the texture "
                                  "(unknown image type); using the factor alone"});
     REQUIRE(mesh.uvs.size() == 3);
@@ -379,8 +377,9 @@ TEST_CASE("gltf: base colour, metallic-roughness and emissive textures at TEXCOO
     // Roughness 0.5 x 1 quantised to level 8 of 16: exactly 0.5, the factor's own lobe.
     CHECK(red.lobe()->distribution.alpha() == doctest::Approx(0.25));
     CHECK(!mesh.materials[1].textures.emission);
-    // BLEND as MASK at 0.5 with a base colour alpha factor of 1 and no texture: nothing cut out.
-    CHECK_FALSE(mesh.materials[1].cutOut({0.5f, 0.5f}));
+    // BLEND, an emitter's as any other's, with a base colour alpha factor of 1 and no texture:
+    // wholly opaque, no coverage to test.
+    CHECK_FALSE(mesh.materials[1].textures.coverage);
 }
 
 TEST_CASE("gltf: alphaMode BLEND is an opacity, the base colour's alpha factor times its texture's") {
@@ -857,6 +856,13 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     cycle.doc["nodes"] = json::array({{{"children", {1}}}, {{"children", {0}}}});
     cycle.doc["scenes"] = json::array({{{"nodes", {0}}}});
     CHECK(gltfError(cycle.gltf()) == "mem/model.gltf: node 0 is reached twice: the node hierarchy is not a tree");
+    Model pastBuffer = model;  // an image's view must lie in its buffer: tinygltf reads it unchecked
+    pastBuffer.meshNode({{"attributes", {{"POSITION", positions}}}});
+    pastBuffer.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 100}});
+    pastBuffer.doc["images"] = json::array({{{"bufferView", 2}, {"mimeType", "image/png"}}});
+    CHECK(gltfError(pastBuffer.gltf()) ==
+          "mem/model.gltf: image 0: bufferView 2 (byteOffset 36, byteLength 100) runs past the end of buffer 0 "
+          "(44 bytes)");
     json missing = model.doc;
     missing["buffers"] = json::array({{{"byteLength", 12}, {"uri", "absent.bin"}}});
     CHECK(gltfError(missing.dump()) == "mem/model.gltf: File not found : absent.bin");

@@ -611,14 +611,14 @@ TEST_CASE("obj: d (or Tr) below 1 is an opacity of the opaque models, as Blender
     CHECK(opacityOf(0) == 0.4f);
     CHECK(opacityOf(1) == 0.75f);
     CHECK(opacityOf(2) == 0.6f);
-    // A dielectric's transparency is its illum; an emitter's d is a warning.
+    // A dielectric's transparency is its illum; an emitter's d is its opacity as any other's
+    // (lights/area_light.h).
     CHECK_FALSE(mesh.materials[3].textures.coverage);
-    CHECK_FALSE(mesh.materials[4].textures.coverage);
+    CHECK(opacityOf(4) == 0.5f);
     CHECK(opacityOf(5) == 0.0f);
     CHECK_FALSE(mesh.materials[6].textures.coverage);
     CHECK(report.warnings == std::vector<std::string>{
                                  "scene.mtl:9: d -halo is read as a plain d",
-                                 "scene.mtl:14: material 'lamp': d (or Tr) below 1 is not applied to an emitting material",
                                  "scene.mtl:17: material 'ghost': d 0 (or Tr 1) makes it wholly transparent"});
     const auto error = [](const std::string& material) {
         return objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n", "newmtl m\nKd 0.5 0.5 0.5\n" + material);
