@@ -53,11 +53,11 @@ struct MaterialTextures {
     // RGB times Ke (MTL map_Ke, glTF emissiveTexture).
     std::shared_ptr<const Texture> emission;
     // Coverage: a hit where channel `coverageChannel` is below `alphaCutoff` is no hit at all
-    // (glTF alphaMode MASK, an emitter's MTL map_d); the ray goes on through it (scene.h). A
-    // blended coverage (glTF alphaMode BLEND, MTL map_d and d) is an opacity instead, times
-    // `opacity`: a ray goes on through with probability 1 - opacity (scene/cutout_filter.h), which
-    // renders, in expectation, the surface blended over what lies behind it, as Cycles renders a
-    // Principled BSDF's alpha.
+    // (glTF alphaMode MASK); the ray goes on through it (scene.h). A blended coverage (glTF
+    // alphaMode BLEND, MTL map_d and d) is an opacity instead, times `opacity`: a ray goes on
+    // through with probability 1 - opacity (scene/cutout_filter.h), which renders, in
+    // expectation, the surface blended over what lies behind it, as Cycles renders a Principled
+    // BSDF's alpha.
     std::shared_ptr<const Texture> coverage;
     int coverageChannel = 0;
     float alphaCutoff = 0.5f;
