@@ -143,8 +143,8 @@ struct Material {
     // where the surface is wholly transparent).
     bool cutOut(glm::vec2 uv, float u = 0.0f) const {
         if (!textures.coverage) return false;
-        const float coverage = textures.coverage->lookup(uv)[textures.coverageChannel];
-        return textures.blended ? coverage * textures.opacity <= u : coverage < textures.alphaCutoff;
+        if (textures.blended) return opacityAt(uv) <= u;
+        return textures.coverage->lookup(uv)[textures.coverageChannel] < textures.alphaCutoff;
     }
     // The share of the rays meeting the surface at `uv` that stop there: a blended coverage's
     // opacity, else 1 (a cut-out's hits are all or nothing).

@@ -174,16 +174,23 @@ std::string_view jsonOf(const std::string& bytes, bool binary) {
     return std::string_view(bytes).substr(20, littleEndian32(bytes, 12));
 }
 
+// The asset's version as written ("2.0", or a number such as the 1 some exporters wrote), or ""
+// where it gives none.
+std::string versionOf(const nlohmann::json& document) {
+    const auto asset = document.find("asset");
+    if (asset == document.end() || !asset->is_object()) return "";
+    const auto version = asset->find("version");
+    if (version == asset->end() || !(version->is_string() || version->is_number())) return "";
+    return version->is_string() ? version->get<std::string>() : version->dump();
+}
+
+std::string majorOf(const std::string& version) { return version.substr(0, version.find('.')); }
+
 // Refuses a version other than 1 (upgraded, gltf_version1.h) and 2; a later minor version of 2 is
 // read.
-void checkVersion(const nlohmann::json& document, const std::string& path) {
-    const auto asset = document.find("asset");
-    if (asset == document.end() || !asset->is_object()) return;
-    const auto version = asset->find("version");
-    if (version == asset->end() || !(version->is_string() || version->is_number())) return;
-    const std::string text = version->is_string() ? version->get<std::string>() : version->dump();
-    if (text.substr(0, text.find('.')) == "2") return;
-    throw Error(path + ": glTF version " + printable(text) + "; Strata reads version 2");
+void checkVersion(const std::string& version, const std::string& path) {
+    if (version.empty() || majorOf(version) == "2") return;
+    throw Error(path + ": glTF version " + printable(version) + "; Strata reads version 2");
 }
 
 // Refuses a file that requires an extension Strata does not implement, before tinygltf reads
@@ -255,6 +262,7 @@ void checkImageViews(const nlohmann::json& document, const std::string& path) {
         return std::nullopt;
     };
     for (size_t i = 0; i < images->size(); ++i) {
+        // An image without a view (a URI's) reads as the view one past the last: none.
         const auto v = whole((*images)[i], "bufferView", views->size());
         if (!v || *v >= views->size()) continue;
         const nlohmann::json& view = (*views)[*v];
@@ -290,17 +298,21 @@ tinygltf::Model loadModel(const std::string& bytes, const std::string& path, tin
                           std::vector<std::string>* images, std::vector<std::string>& notes) {
     if (bytes.size() > std::numeric_limits<uint32_t>::max()) throw Error(path + ": larger than 4 GB");
     const bool binary = bytes.compare(0, 4, "glTF") == 0;
-    const auto upgraded = [&] {
+    const auto upgraded = [&](const nlohmann::json& document, std::string_view body) {
         notes.push_back(kUpgradedNote);
-        return loadModel(upgradeGltfVersion1(bytes, path), path, files, images, notes);
+        return loadModel(upgradeGltfVersion1(document, body, binary, path), path, files, images, notes);
     };
-    if (binary && isBinaryGltfVersion1(bytes)) return upgraded();
+    if (binary && isBinaryGltfVersion1(bytes)) {
+        const BinaryGltfVersion1 parts = splitBinaryGltfVersion1(bytes, path);
+        return upgraded(nlohmann::json::parse(parts.content, nullptr, /*allow_exceptions=*/false), parts.body);
+    }
     if (binary) checkBinaryLayout(bytes, path);
     nlohmann::json document = nlohmann::json::parse(jsonOf(bytes, binary), nullptr, /*allow_exceptions=*/false);
     std::string rewritten;  // the bytes tinygltf reads when they differ from the file's
     if (document.is_object()) {  // else tinygltf says what is wrong with it
-        if (!binary && isGltfVersion1(document)) return upgraded();
-        checkVersion(document, path);
+        const std::string version = versionOf(document);
+        if (majorOf(version) == "1") return upgraded(document, {});
+        checkVersion(version, path);
         checkRequiredExtensions(document, path);
         checkArrays(document, path);
         checkImageViews(document, path);

@@ -93,13 +93,16 @@ public:
 
 private:
     // What to do for each part of the 1.0 list `list`, in the order `number` gave them indices.
+    // A part without a name of its own is named by its 1.0 name, which messages then show.
     template <typename Convert>
     json each(const std::string& list, Convert convert) {
         json out = json::array();
         for (const auto& [name, part] : parts_[list]) {
             const std::string where = singular(list) + " " + quote(name);
             if (!part->is_object()) fail(where + " is not an object");
-            out.push_back(convert(*part, where));
+            json converted = convert(*part, where);
+            if (!converted.contains("name")) converted["name"] = name;
+            out.push_back(std::move(converted));
         }
         return out;
     }
@@ -285,7 +288,8 @@ private:
         return out;
     }
 
-    // The attributes 2.0 knows by the same names; 1.0's JOINT and WEIGHT (skins) are not read.
+    // The attributes 2.0 knows by the same names, TEXCOORD and COLOR without a set index taken as
+    // set 0; 1.0's JOINT and WEIGHT (skins) are not read.
     json mesh(const json& m, const std::string& where) {
         json primitives = json::array();
         const json list = m.value("primitives", json::array());
@@ -294,10 +298,11 @@ private:
             if (!p.is_object()) fail(where + ": a primitive is not an object");
             json attributes = json::object();
             if (p.contains("attributes") && p["attributes"].is_object()) {
-                for (const auto& [semantic, accessor] : p["attributes"].items()) {
+                for (const auto& [given, accessor] : p["attributes"].items()) {
+                    const std::string semantic = given == "TEXCOORD" || given == "COLOR" ? given + "_0" : given;
                     if (semantic == "POSITION" || semantic == "NORMAL" || semantic.rfind("TEXCOORD_", 0) == 0 ||
                         semantic.rfind("COLOR_", 0) == 0) {
-                        attributes[semantic] = index("accessors", accessor, where + ": " + semantic);
+                        attributes[semantic] = index("accessors", accessor, where + ": " + given);
                     }
                 }
             }
@@ -367,40 +372,23 @@ bool isBinaryGltfVersion1(std::string_view bytes) {
     return bytes.size() >= 8 && bytes.substr(0, 4) == "glTF" && littleEndian32(bytes, 4) == 1;
 }
 
-bool isGltfVersion1(const json& document) {
-    if (!document.is_object()) return false;
-    const auto asset = document.find("asset");
-    if (asset == document.end() || !asset->is_object()) return false;
-    const auto version = asset->find("version");
-    if (version == asset->end()) return false;
-    if (version->is_number()) return version->get<double>() >= 1.0 && version->get<double>() < 2.0;
-    if (!version->is_string()) return false;
-    const auto text = version->get<std::string>();
-    return text == "1" || text.rfind("1.", 0) == 0;
+BinaryGltfVersion1 splitBinaryGltfVersion1(std::string_view bytes, const std::string& path) {
+    const auto fail = [&](const std::string& what) { throw Error(path + ": glTF 1.0: " + what); };
+    // Magic, version 1, the total length, the content's length and format (0: JSON).
+    if (bytes.size() < 20) fail("shorter than a binary glTF 1.0's 20-byte header");
+    const size_t length = littleEndian32(bytes, 8);
+    if (length > bytes.size() || length < 20) {
+        fail("the binary header gives a length of " + std::to_string(length) + " bytes, the file has " +
+             std::to_string(bytes.size()));
+    }
+    const size_t contentLength = littleEndian32(bytes, 12);
+    if (contentLength > length - 20) fail("the binary header's content runs past the end of the file");
+    if (littleEndian32(bytes, 16) != 0) fail("the binary content is not JSON (format 0)");
+    return {bytes.substr(20, contentLength), bytes.substr(20 + contentLength, length - 20 - contentLength)};
 }
 
-std::string upgradeGltfVersion1(const std::string& bytes, const std::string& path) {
-    const auto fail = [&](const std::string& what) { throw Error(path + ": glTF 1.0: " + what); };
-    std::string_view content = bytes;
-    std::string_view body;
-    const bool binary = bytes.compare(0, 4, "glTF") == 0;
-    if (binary) {
-        // KHR_binary_glTF: magic, version 1, the total length, the content's length and format
-        // (0: JSON), the content, then the body.
-        if (bytes.size() < 20) fail("shorter than a binary glTF 1.0's 20-byte header");
-        const size_t length = littleEndian32(bytes, 8);
-        if (length > bytes.size() || length < 20) {
-            fail("the binary header gives a length of " + std::to_string(length) + " bytes, the file has " +
-                 std::to_string(bytes.size()));
-        }
-        const size_t contentLength = littleEndian32(bytes, 12);
-        if (contentLength > length - 20) fail("the binary header's content runs past the end of the file");
-        if (littleEndian32(bytes, 16) != 0) fail("the binary content is not JSON (format 0)");
-        content = std::string_view(bytes).substr(20, contentLength);
-        body = std::string_view(bytes).substr(20 + contentLength, length - 20 - contentLength);
-    }
-    const json document = json::parse(content, nullptr, /*allow_exceptions=*/false);
-    if (!document.is_object()) fail("its JSON is not an object");
+std::string upgradeGltfVersion1(const json& document, std::string_view body, bool binary, const std::string& path) {
+    if (!document.is_object()) throw Error(path + ": glTF 1.0: its JSON is not an object");
     const std::string upgraded = Upgrade(document, path, binary).run().dump();
     if (!binary) return upgraded;
     return glbOf(upgraded, body.empty() ? std::string() : glbChunk(kGlbBinChunk, body, '\0'));

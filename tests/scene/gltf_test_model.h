@@ -101,14 +101,17 @@ inline SceneBundle bundleOf(const std::string& bytes, const std::string& name = 
     return SceneBundle{"mem/" + name, {{name, bytes}}, std::nullopt, std::nullopt};
 }
 
-// The one line that parsing `model` as a .gltf throws, or "(loaded)".
-inline std::string errorOf(const Model& model) {
+// The one line that parsing `bytes` as the file `name` throws, or "(loaded)".
+inline std::string errorOf(const std::string& bytes, const std::string& name = "model.gltf") {
     try {
-        parseGltfScene(bundleOf(model.gltf()));
+        parseGltfScene(bundleOf(bytes, name));
     } catch (const Error& error) {
         return error.what();
     }
     return "(loaded)";
 }
+
+// The same for `model` as a .gltf.
+inline std::string errorOf(const Model& model) { return errorOf(model.gltf()); }
 
 }  // namespace strata::test

@@ -29,6 +29,7 @@ using nlohmann::json;
 using test::append;
 using test::base64;
 using test::bundleOf;
+using test::errorOf;
 using test::Model;
 
 namespace {
@@ -37,15 +38,6 @@ constexpr float kHalfRoot2 = 0.70710678118654752f;
 
 ParsedScene parse(const std::string& bytes, LoadReport* report = nullptr) {
     return parseGltfScene(bundleOf(bytes), report);
-}
-
-std::string gltfError(const std::string& bytes) {
-    try {
-        parse(bytes);
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(loaded)";
 }
 
 const std::vector<float> kTriangle{0, 0, 0, 1, 0, 0, 0, 1, 0};
@@ -120,7 +112,7 @@ TEST_CASE("gltf: quantized positions and normals (KHR_mesh_quantization)") {
     CHECK(mesh.normals[1] == glm::vec3(0, 0, -1));  // -128 clamps to -1
     // Normals must be normalized integers: plain bytes are refused.
     model.doc["accessors"][normals]["normalized"] = false;
-    CHECK(gltfError(model.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: NORMAL accessor 1 has component "
+    CHECK(errorOf(model.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: NORMAL accessor 1 has component "
                                      "type 5120, which glTF does not allow for it");
 }
 
@@ -837,46 +829,46 @@ TEST_CASE("gltf: bad input is one line naming the file and what is wrong") {
     Model required = model;
     required.meshNode({{"attributes", {{"POSITION", positions}}}});
     required.doc["extensionsRequired"] = {"KHR_materials_iridescence"};
-    CHECK(gltfError(required.gltf()) ==
+    CHECK(errorOf(required.gltf()) ==
           "mem/model.gltf: requires extension KHR_materials_iridescence, which Strata does not implement");
     Model lines = model;
     lines.meshNode({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});
-    CHECK(gltfError(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
+    CHECK(errorOf(lines.gltf()) == "mem/model.gltf: the file holds only lines, no surfaces; Strata renders "
                                      "triangles, strips and fans");
     Model outOfRange = model;
     outOfRange.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
-    CHECK(gltfError(outOfRange.gltf()) ==
+    CHECK(errorOf(outOfRange.gltf()) ==
           "mem/model.gltf: every triangle uses an index past its primitive's vertices; nothing is left");
     Model shortView = model;
     shortView.doc["accessors"][0]["count"] = 4;
     shortView.meshNode({{"attributes", {{"POSITION", positions}}}});
-    CHECK(gltfError(shortView.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: POSITION accessor 0: "
+    CHECK(errorOf(shortView.gltf()) == "mem/model.gltf: mesh 'm0' (0) primitive 0: POSITION accessor 0: "
                                          "4 elements run past the end of bufferView 0");
     Model cycle = model;
     cycle.doc["nodes"] = json::array({{{"children", {1}}}, {{"children", {0}}}});
     cycle.doc["scenes"] = json::array({{{"nodes", {0}}}});
-    CHECK(gltfError(cycle.gltf()) == "mem/model.gltf: node 0 is reached twice: the node hierarchy is not a tree");
+    CHECK(errorOf(cycle.gltf()) == "mem/model.gltf: node 0 is reached twice: the node hierarchy is not a tree");
     Model pastBuffer = model;  // an image's view must lie in its buffer: tinygltf reads it unchecked
     pastBuffer.meshNode({{"attributes", {{"POSITION", positions}}}});
     pastBuffer.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 100}});
     pastBuffer.doc["images"] = json::array({{{"bufferView", 2}, {"mimeType", "image/png"}}});
-    CHECK(gltfError(pastBuffer.gltf()) ==
+    CHECK(errorOf(pastBuffer.gltf()) ==
           "mem/model.gltf: image 0: bufferView 2 (byteOffset 36, byteLength 100) runs past the end of buffer 0 "
           "(44 bytes)");
     json missing = model.doc;
     missing["buffers"] = json::array({{{"byteLength", 12}, {"uri", "absent.bin"}}});
-    CHECK(gltfError(missing.dump()) == "mem/model.gltf: File not found : absent.bin");
+    CHECK(errorOf(missing.dump()) == "mem/model.gltf: File not found : absent.bin");
     // glTF 1.0 (by its version, a string or a number) is upgraded (test_gltf_version1.cpp); a
     // version that is neither is refused by it, not by the first list it cannot read.
-    CHECK(gltfError(R"({"asset": {"version": 1}, "accessors": []})") ==
+    CHECK(errorOf(R"({"asset": {"version": 1}, "accessors": []})") ==
           "mem/model.gltf: glTF 1.0: \"accessors\" is not an object keyed by name, as glTF 1.0's lists are");
-    CHECK(gltfError(R"({"asset": {"version": "0.8"}, "accessors": {"a": {}}})") ==
+    CHECK(errorOf(R"({"asset": {"version": "0.8"}, "accessors": {"a": {}}})") ==
           "mem/model.gltf: glTF version 0.8; Strata reads version 2");
     Model minor = model;  // a later 2.x is read
     minor.meshNode({{"attributes", {{"POSITION", positions}}}});
     minor.doc["asset"]["version"] = "2.1";
     CHECK(parseGltfScene(bundleOf(minor.gltf())).mesh.triangles.size() == 1);
-    const std::string malformed = gltfError(R"({"asset": {"version": "2.0"}, "nodes": [)");
+    const std::string malformed = errorOf(R"({"asset": {"version": "2.0"}, "nodes": [)");
     CHECK(malformed.rfind("mem/model.gltf: ", 0) == 0);
     CHECK(malformed.find("parse error") != std::string::npos);
     CHECK(malformed.find('\n') == std::string::npos);
@@ -943,7 +935,7 @@ TEST_CASE("gltf: strengths, intensities and scales are checked as the floats the
     lamp.meshNode({{"attributes", {{"POSITION", lamp.positions(kTriangle)}}}, {"material", 0}});
     lamp.doc["materials"] = json::array(
         {{{"emissiveFactor", {1, 1, 1}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e300}}}}}}});
-    CHECK(gltfError(lamp.gltf()) == "mem/model.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range");
+    CHECK(errorOf(lamp.gltf()) == "mem/model.gltf: material '' (0): emissiveStrength x emissiveFactor is beyond float range");
     // Finite as a float, it stands.
     lamp.doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e30;
     CHECK(parse(lamp.gltf()).mesh.materials[0].emission == glm::vec3(1e30f));
@@ -952,19 +944,19 @@ TEST_CASE("gltf: strengths, intensities and scales are checked as the floats the
     light.meshNode({{"attributes", {{"POSITION", light.positions(kTriangle)}}}});
     light.doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({{{"type", "point"}, {"intensity", 1e300}}});
     light.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
     light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"color", {1e20, 0, 0}}, {"intensity", 1e20}};
-    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): intensity x color is beyond float range");
     light.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"type", "point"}, {"intensity", 1}};
     light.doc["nodes"][1]["translation"] = {1e300, 0, 0};
-    CHECK(gltfError(light.gltf()) == "mem/model.gltf: light '' (0): its node's position is beyond float range");
+    CHECK(errorOf(light.gltf()) == "mem/model.gltf: light '' (0): its node's position is beyond float range");
 
     Model bumpy;
     bumpy.meshNode({{"attributes", {{"POSITION", bumpy.positions(kTriangle)}}}, {"material", 0}});
     bumpy.doc["images"] = json::array({{{"uri", "gone.png"}}});
     bumpy.doc["textures"] = json::array({{{"source", 0}}});
     bumpy.doc["materials"] = json::array({{{"normalTexture", {{"index", 0}, {"scale", 1e300}}}}});
-    CHECK(gltfError(bumpy.gltf()) == "mem/model.gltf: material '' (0): normalTexture scale is beyond float range");
+    CHECK(errorOf(bumpy.gltf()) == "mem/model.gltf: material '' (0): normalTexture scale is beyond float range");
 
     Model camera;
     camera.meshNode({{"attributes", {{"POSITION", camera.positions(kTriangle)}}}});
@@ -980,7 +972,7 @@ TEST_CASE("gltf: messages quote names with their control characters escaped and 
     Model model;
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}, {"material", 0}});
     model.doc["materials"] = json::array({{{"name", "\x1b[2J\nred"}, {"emissiveFactor", {2, 0, 0}}}});
-    CHECK(gltfError(model.gltf()) == "mem/model.gltf: material '\\x1b[2J\\nred' (0): emissiveFactor needs 3 numbers in 0..1");
+    CHECK(errorOf(model.gltf()) == "mem/model.gltf: material '\\x1b[2J\\nred' (0): emissiveFactor needs 3 numbers in 0..1");
     model.doc["materials"][0]["emissiveFactor"] = {1, 0, 0};
     model.doc["images"] = json::array({{{"uri", "gone\r.png"}}});
     model.doc["textures"] = json::array({{{"source", 0}}});
@@ -993,7 +985,7 @@ TEST_CASE("gltf: messages quote names with their control characters escaped and 
     json broken = model.doc;
     broken["buffers"] = json::array({{{"byteLength", 36},
                                       {"uri", "data:application/octet-stream;base64," + std::string(50000, '!')}}});
-    CHECK(gltfError(broken.dump()) ==
+    CHECK(errorOf(broken.dump()) ==
           "mem/model.gltf: Failed to decode 'uri' : data:application/octet-stream;base64,... (50037 bytes) in Buffer");
 }
 
@@ -1045,13 +1037,13 @@ TEST_CASE("gltf: a list of the wrong JSON type is named, not read as absent") {
     model.meshNode({{"attributes", {{"POSITION", model.positions(kTriangle)}}}});
     Model primitives = model;
     primitives.doc["meshes"][0]["primitives"] = {{"not an array", {{"POSITION", 0}}}};
-    CHECK(gltfError(primitives.gltf()) == "mem/model.gltf: mesh 0: \"primitives\" is not an array (it is object)");
+    CHECK(errorOf(primitives.gltf()) == "mem/model.gltf: mesh 0: \"primitives\" is not an array (it is object)");
     Model children = model;
     children.doc["nodes"][0]["children"] = 1;
-    CHECK(gltfError(children.gltf()) == "mem/model.gltf: node 0: \"children\" is not an array (it is number)");
+    CHECK(errorOf(children.gltf()) == "mem/model.gltf: node 0: \"children\" is not an array (it is number)");
     Model meshes = model;
     meshes.doc["meshes"] = "m";
-    CHECK(gltfError(meshes.gltf()) == "mem/model.gltf: \"meshes\" is not an array (it is string)");
+    CHECK(errorOf(meshes.gltf()) == "mem/model.gltf: \"meshes\" is not an array (it is string)");
     const std::filesystem::path badArray = "/usr/share/assimp/models/glTF2/wrongTypes/badArray.gltf";
     if (!std::filesystem::exists(badArray)) {
         MESSAGE("assimp-testmodels not installed: " << badArray << " is absent, skipped");

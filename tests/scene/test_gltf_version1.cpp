@@ -21,6 +21,7 @@ using nlohmann::json;
 using test::append;
 using test::base64;
 using test::bundleOf;
+using test::errorOf;
 
 namespace {
 
@@ -39,8 +40,9 @@ std::string triangleBuffer() {
 }
 
 // A glTF 1.0 document over buffer `buffer` (triangleBuffer's layout): node "root" holds meshes
-// "a" and "b", each the triangle, "a" with the technique material "phong", "b" with the
-// KHR_materials_common one "common".
+// "a" and "b", each the triangle, "a" with the technique material "phong" (named "Phong"), "b"
+// with the KHR_materials_common one "common" (unnamed) and UVs on a TEXCOORD without a set index,
+// as some exporters wrote it.
 json version1Document(const json& buffer) {
     return {
         {"asset", {{"version", "1.0"}}},
@@ -65,8 +67,7 @@ json version1Document(const json& buffer) {
          {{"phong",
            {{"name", "Phong"}, {"technique", "t"}, {"values", {{"specular", {0.04, 0.04, 0.04, 1}}, {"shininess", 256}}}}},
           {"common",
-           {{"name", "Common"},
-            {"extensions",
+           {{"extensions",
              {{"KHR_materials_common",
                {{"technique", "LAMBERT"}, {"values", {{"diffuse", {0.2, 0.4, 0.6, 1}}, {"emission", {2, 1, 0, 1}}}}}}}}}}}},
         {"meshes",
@@ -77,7 +78,7 @@ json version1Document(const json& buffer) {
                {"material", "phong"}}}}}},
           {"b",
            {{"primitives",
-             {{{"attributes", {{"POSITION", "position"}, {"TEXCOORD_0", "uv"}}},
+             {{{"attributes", {{"POSITION", "position"}, {"TEXCOORD", "uv"}}},
                {"indices", "index"},
                {"material", "common"}}}}}}}},
         {"nodes", {{"root", {{"meshes", {"a", "b"}}, {"translation", {0, 0, 1}}}}}},
@@ -110,15 +111,6 @@ std::string binaryVersion1(std::string content, const std::string& body) {
     return out + content + body;
 }
 
-std::string errorOf(const std::string& bytes, const std::string& name = "model.gltf") {
-    try {
-        parseGltfScene(bundleOf(bytes, name));
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(loaded)";
-}
-
 }  // namespace
 
 TEST_CASE("gltf 1.0: named lists, strided accessors, a node's meshes and Blinn-Phong materials read as 2.0") {
@@ -143,8 +135,10 @@ TEST_CASE("gltf 1.0: named lists, strided accessors, a node's meshes and Blinn-P
     CHECK(phong.diffuse.x == doctest::Approx(0.5 * 0.96));
     CHECK(phong.specular == glm::vec3(0.04f));
     CHECK(phong.roughness == doctest::Approx(roughnessFromShininess(256.0f)));
-    // LAMBERT: no specular; an emission above 1 keeps its brightness.
-    const Material& common = named(mesh, "Common");
+    // LAMBERT: no specular; an emission above 1 keeps its brightness. Unnamed, the material takes
+    // its 1.0 name; its mesh's TEXCOORD is set 0.
+    const Material& common = named(mesh, "common");
+    CHECK(std::count(mesh.triangleUvs.begin(), mesh.triangleUvs.end(), kNoUvs) == 1);
     CHECK(common.diffuse.x == doctest::Approx(0.2));
     CHECK(common.diffuse.z == doctest::Approx(0.6));
     CHECK(common.specular == glm::vec3(0.0f));
@@ -170,7 +164,7 @@ TEST_CASE("gltf 1.0: a binary file's body is its buffer, an image in it read thr
     document["extensionsUsed"] = {"KHR_binary_glTF", "KHR_materials_common"};
     const MeshData mesh = parseGltfScene(bundleOf(binaryVersion1(document.dump(), body), "model.glb")).mesh;
     REQUIRE(mesh.triangles.size() == 2);
-    const Material& common = named(mesh, "Common");
+    const Material& common = named(mesh, "common");
     REQUIRE(common.textures.colour);
     // Codes 255 and 0 decode to 1 and 0 exactly in sRGB.
     CHECK(common.textures.colour->lookup({0.5f, 0.5f}) == glm::vec4(1, 0, 1, 1));
